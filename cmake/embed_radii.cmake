@@ -1,0 +1,12 @@
+# Writes a C++ source that maps each radius set's name (file stem) to its text.
+set(content "// Generated from data/radii/*.txt by cmake/embed_radii.cmake. Do not edit.\n")
+string(APPEND content "#include <map>\n#include <string>\nnamespace molsurf::detail {\n")
+string(APPEND content "const std::map<std::string, std::string>& builtin_radius_sets() {\n")
+string(APPEND content "  static const std::map<std::string, std::string> sets = {\n")
+foreach(f IN LISTS FILES)
+  get_filename_component(name ${f} NAME_WE)
+  file(READ ${f} text)
+  string(APPEND content "    {\"${name}\", R\"molsurf_radii(${text})molsurf_radii\"},\n")
+endforeach()
+string(APPEND content "  };\n  return sets;\n}\n}  // namespace molsurf::detail\n")
+file(WRITE ${OUT} "${content}")

@@ -1,0 +1,95 @@
+#pragma once
+// Structure input: atoms with their radii, read from PDB / mmCIF (plain or gzipped),
+// PQR or MSMS .xyzr, with the selection rules a structural biologist expects.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "molsurf/vec3.hpp"
+
+namespace molsurf {
+
+struct Atom {
+  Vec3 centre;
+  double radius = 0;         // van der Waals radius (no probe), angstrom
+  std::string element;       // upper case, e.g. "C", "FE"
+  std::string atom_name;     // e.g. "CA"
+  std::string residue_name;  // e.g. "ALA", "HEM"
+  int residue_number = 0;
+  char insertion_code = ' ';
+  std::string chain;
+  int serial = 0;            // atom serial number in the file (0 when the format has none)
+  double occupancy = 1;
+  double b_factor = 0;
+  double charge = 0;         // PQR partial charge; 0 elsewhere
+  bool hetero = false;
+};
+
+enum class StructureFormat { pdb, mmcif, pqr, xyzr };
+
+struct ReadOptions {
+  std::optional<int> model;         // model number as written in the file; default: the first
+  std::vector<std::string> chains;  // keep only these chains; empty: all
+  bool keep_water = false;
+  bool keep_hydrogens = false;      // hydrogen and deuterium
+  bool keep_hetatm = true;          // ligands, ions, cofactors
+  std::string radius_set = "protor";  // "protor" or "bondi"; ignored for PQR / xyzr
+  std::filesystem::path radius_file;  // user table; overrides radius_set when not empty
+};
+
+// What the reader kept, dropped and guessed: every count a user may want to check.
+struct ReadReport {
+  std::filesystem::path file;
+  StructureFormat format = StructureFormat::pdb;
+  std::size_t models_in_file = 1;
+  int model_used = 1;
+  std::size_t records = 0;             // atom records in the model read
+  std::size_t kept = 0;
+  std::size_t dropped_water = 0;
+  std::size_t dropped_hydrogen = 0;
+  std::size_t dropped_altloc = 0;      // alternate conformers not chosen
+  std::size_t dropped_hetatm = 0;
+  std::size_t dropped_chain = 0;
+  std::map<std::string, std::size_t> kept_by_element;
+  std::string radius_set;              // "protor", "bondi", a file name, or "file" for PQR/xyzr
+  std::size_t radius_from_element = 0;  // atoms not in the table, given their element's radius
+  std::size_t radius_default = 0;       // atoms with an unknown element, given the default radius
+  std::vector<std::string> fallback_examples;  // a few "RES ATOM (element)" that fell back
+};
+
+struct Structure {
+  std::vector<Atom> atoms;
+  ReadReport report;
+};
+
+// Format from the name: .pdb .ent (.gz), .cif .mmcif (.gz), .pqr, .xyzr.
+StructureFormat structure_format_from_path(const std::filesystem::path& path);
+
+// Throws molsurf::Error naming file, line and problem; also when the selection is empty.
+Structure read_structure(const std::filesystem::path& path, const ReadOptions& options = {});
+
+// Radius tables are data: built-in sets are compiled in from data/radii/*.txt.
+class RadiusTable {
+ public:
+  static RadiusTable builtin(const std::string& name);          // "protor" or "bondi"
+  static RadiusTable from_file(const std::filesystem::path& path);
+  static RadiusTable parse(const std::string& text, const std::string& source_name);
+
+  enum class Source { residue_atom, element, fallback_default };
+  struct Lookup { double radius; Source source; };
+  Lookup radius(const std::string& residue_name, const std::string& atom_name,
+                const std::string& element) const;
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_;
+  std::map<std::pair<std::string, std::string>, double> by_residue_atom_;  // ("ANY", atom) allowed
+  std::map<std::string, double> by_element_;
+  double default_radius_ = 1.8;
+};
+
+}  // namespace molsurf

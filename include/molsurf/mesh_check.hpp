@@ -1,0 +1,49 @@
+#pragma once
+// Validation of a triangle mesh as a closed surface: every decision exact.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "molsurf/mesh.hpp"
+
+namespace molsurf {
+
+struct MeshCheckOptions {
+  bool self_intersections = true;  // the expensive part: BVH + exact triangle tests
+  std::size_t max_examples = 5;    // face (or vertex) indices kept per defect
+};
+
+struct MeshCheck {
+  std::size_t vertices = 0, faces = 0, edges = 0;
+  std::size_t unused_vertices = 0;
+  std::size_t boundary_edges = 0;        // used by one face: a hole
+  std::size_t nonmanifold_edges = 0;     // used by more than two faces
+  std::size_t misoriented_edges = 0;     // two faces traverse it the same way
+  std::size_t nonmanifold_vertices = 0;  // faces around it form more than one fan
+  std::size_t degenerate_faces = 0;      // repeated index or collinear corners (exact)
+  std::size_t duplicate_faces = 0;       // same three vertices twice
+  std::size_t intersecting_pairs = 0;    // face pairs that cross or overlap
+  std::size_t contact_pairs = 0;         // face pairs that only touch, at a point or along a segment
+  bool self_intersections_checked = false;
+  std::size_t components = 0;
+  std::size_t inward_components = 0;     // outer components with negative volume
+  long euler_characteristic = 0;
+  double area = 0, volume = 0;
+  Quality quality;
+
+  std::vector<std::size_t> examples_boundary, examples_nonmanifold_edge, examples_misoriented,
+      examples_nonmanifold_vertex, examples_degenerate, examples_intersecting, examples_contact;
+
+  bool closed() const { return boundary_edges == 0 && nonmanifold_edges == 0; }
+  bool manifold() const { return nonmanifold_edges == 0 && nonmanifold_vertices == 0; }
+  bool oriented() const { return misoriented_edges == 0; }
+  // Closed, 2-manifold, consistently oriented outward, no degenerate face and no
+  // self-intersection. Contacts (touching without crossing) do not make it invalid.
+  bool valid() const;
+  // One line per defect found, e.g. "3 boundary edges (a hole): faces 10 11 12".
+  std::vector<std::string> defects() const;
+};
+
+MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options = {});
+
+}  // namespace molsurf

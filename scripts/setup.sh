@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs molsurf's system dependencies (Debian 12, idempotent) and builds the release preset.
+# Usage: scripts/setup.sh [release|debug]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+
+packages=(build-essential cmake ninja-build pkg-config
+  gemmi-dev tao-pegtl-dev zlib1g-dev libeigen3-dev libvtk9-dev libcli11-dev
+  googletest libgtest-dev libgmp-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset"
