@@ -1,0 +1,205 @@
+#include "molsurf/mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <utility>
+
+namespace molsurf {
+
+void Mesh::append(const Mesh& other) {
+  const auto offset = static_cast<Index>(vertices.size());
+  const bool tagged = has_tags() || other.has_tags();
+  if (tagged && face_tags.size() != faces.size()) face_tags.resize(faces.size(), kNoTag);
+  vertices.insert(vertices.end(), other.vertices.begin(), other.vertices.end());
+  faces.reserve(faces.size() + other.faces.size());
+  for (const Triangle& t : other.faces) faces.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  if (tagged) {
+    if (other.has_tags())
+      face_tags.insert(face_tags.end(), other.face_tags.begin(), other.face_tags.end());
+    else
+      face_tags.resize(faces.size(), kNoTag);
+  }
+}
+
+void BoundingBox::extend(const Vec3& p) {
+  min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+  max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+}
+
+void BoundingBox::extend(const BoundingBox& b) {
+  if (b.empty()) return;
+  extend(b.min);
+  extend(b.max);
+}
+
+bool BoundingBox::overlaps(const BoundingBox& b) const {
+  // Closed boxes: touching boxes overlap, so culling never drops a contact.
+  return min.x <= b.max.x && b.min.x <= max.x && min.y <= b.max.y && b.min.y <= max.y &&
+         min.z <= b.max.z && b.min.z <= max.z;
+}
+
+BoundingBox bounding_box(const Mesh& mesh) {
+  BoundingBox box;
+  for (const Triangle& t : mesh.faces)
+    for (Index v : t) box.extend(mesh.vertices[v]);
+  return box;
+}
+
+BoundingBox bounding_box(const Mesh& mesh, std::size_t face) {
+  BoundingBox box;
+  for (Index v : mesh.faces[face]) box.extend(mesh.vertices[v]);
+  return box;
+}
+
+namespace {
+
+Vec3 area_vector(const Mesh& mesh, std::size_t face) {  // twice the area, along the normal
+  const Triangle& t = mesh.faces[face];
+  const Vec3& a = mesh.vertices[t[0]];
+  return cross(mesh.vertices[t[1]] - a, mesh.vertices[t[2]] - a);
+}
+
+}  // namespace
+
+double face_area(const Mesh& mesh, std::size_t face) { return 0.5 * norm(area_vector(mesh, face)); }
+
+double surface_area(const Mesh& mesh) {
+  double total = 0;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) total += face_area(mesh, f);
+  return total;
+}
+
+double signed_volume(const Mesh& mesh) {
+  if (mesh.faces.empty()) return 0;
+  // Relative to the box centre: the volume does not depend on the origin for a closed
+  // mesh, and small relative coordinates lose far less to cancellation.
+  const BoundingBox box = bounding_box(mesh);
+  const Vec3 origin = 0.5 * (box.min + box.max);
+  double six_volume = 0;
+  for (const Triangle& t : mesh.faces) {
+    const Vec3 a = mesh.vertices[t[0]] - origin;
+    const Vec3 b = mesh.vertices[t[1]] - origin;
+    const Vec3 c = mesh.vertices[t[2]] - origin;
+    six_volume += dot(a, cross(b, c));
+  }
+  return six_volume / 6.0;
+}
+
+Vec3 face_normal(const Mesh& mesh, std::size_t face) {
+  const Vec3 n = area_vector(mesh, face);
+  const double length = norm(n);
+  return length > 0 ? n / length : Vec3{};
+}
+
+std::vector<Vec3> vertex_normals(const Mesh& mesh) {
+  std::vector<Vec3> normals(mesh.vertices.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Vec3 n = area_vector(mesh, f);
+    for (Index v : mesh.faces[f]) normals[v] += n;
+  }
+  for (Vec3& n : normals) {
+    const double length = norm(n);
+    if (length > 0) n = n / length;
+  }
+  return normals;
+}
+
+namespace {
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+}  // namespace
+
+Components connected_components(const Mesh& mesh) {
+  DisjointSets sets(mesh.vertices.size());
+  for (const Triangle& t : mesh.faces) {
+    sets.unite(t[0], t[1]);
+    sets.unite(t[1], t[2]);
+  }
+  Components result;
+  result.face_component.resize(mesh.faces.size());
+  constexpr std::uint32_t kUnnumbered = ~0u;
+  std::vector<std::uint32_t> number_of_root(mesh.vertices.size(), kUnnumbered);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    std::uint32_t& number = number_of_root[sets.find(mesh.faces[f][0])];
+    if (number == kUnnumbered) number = static_cast<std::uint32_t>(result.count++);
+    result.face_component[f] = number;
+  }
+  return result;
+}
+
+long euler_characteristic(const Mesh& mesh) {
+  std::vector<std::pair<Index, Index>> edges;
+  edges.reserve(3 * mesh.faces.size());
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const Triangle& t : mesh.faces)
+    for (int i = 0; i < 3; ++i) {
+      used[t[i]] = 1;
+      edges.emplace_back(std::minmax(t[i], t[(i + 1) % 3]));
+    }
+  std::sort(edges.begin(), edges.end());
+  const auto edge_count = std::unique(edges.begin(), edges.end()) - edges.begin();
+  const auto vertex_count = std::count(used.begin(), used.end(), 1);
+  return static_cast<long>(vertex_count) - static_cast<long>(edge_count) +
+         static_cast<long>(mesh.faces.size());
+}
+
+double min_angle_deg(const Mesh& mesh, std::size_t face) {
+  const Triangle& t = mesh.faces[face];
+  double smallest = 180;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p = mesh.vertices[t[i]];
+    const Vec3 u = mesh.vertices[t[(i + 1) % 3]] - p;
+    const Vec3 w = mesh.vertices[t[(i + 2) % 3]] - p;
+    // atan2 of |u x w| and u.w stays accurate for tiny and near-straight angles.
+    smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)));
+  }
+  return std::min(180.0, smallest * 180.0 / std::numbers::pi);
+}
+
+double aspect_ratio(const Mesh& mesh, std::size_t face) {
+  const Triangle& t = mesh.faces[face];
+  const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+  const double ab = norm(b - a), bc = norm(c - b), ca = norm(a - c);
+  const double twice_area = norm(cross(b - a, c - a));
+  if (twice_area == 0) return std::numeric_limits<double>::infinity();
+  const double inradius = twice_area / (ab + bc + ca);
+  return std::max({ab, bc, ca}) / (2 * std::sqrt(3.0) * inradius);
+}
+
+Quality mesh_quality(const Mesh& mesh) {
+  Quality q;
+  q.faces = mesh.faces.size();
+  if (q.faces == 0) return q;
+  q.min_angle_deg = 180;
+  double sum = 0;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const double angle = min_angle_deg(mesh, f);
+    q.min_angle_deg = std::min(q.min_angle_deg, angle);
+    sum += angle;
+    if (angle < 1) ++q.below_1deg;
+    if (angle < 5) ++q.below_5deg;
+    q.max_aspect_ratio = std::max(q.max_aspect_ratio, aspect_ratio(mesh, f));
+  }
+  q.mean_min_angle_deg = sum / static_cast<double>(q.faces);
+  return q;
+}
+
+}  // namespace molsurf
