@@ -3,6 +3,7 @@ set(content "// Generated from data/radii/*.txt by cmake/embed_radii.cmake. Do n
 string(APPEND content "#include <map>\n#include <string>\nnamespace molsurf::detail {\n")
 string(APPEND content "const std::map<std::string, std::string>& builtin_radius_sets() {\n")
 string(APPEND content "  static const std::map<std::string, std::string> sets = {\n")
+string(REPLACE "|" ";" FILES "${FILES}")
 foreach(f IN LISTS FILES)
   get_filename_component(name ${f} NAME_WE)
   file(READ ${f} text)

@@ -1,2 +1,48 @@
-// Placeholder until the CLI lands.
-int main() { return 0; }
+// molsurf: the command line. It only parses options and calls the library.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "molsurf/error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace molsurf::cli;
+  CLI::App app{
+      "molsurf " MOLSURF_VERSION " - exact, watertight molecular surfaces.\n"
+      "The solvent-accessible surface of a structure is the union of one sphere per atom\n"
+      "(radius r_vdW + probe), each triangulated as an icosphere, joined by exact mesh union.\n\n"
+      "Usage:\n"
+      "  molsurf [OPTIONS] STRUCTURE        surface of a .pdb .cif .pqr .xyzr file (.gz too)\n"
+      "  molsurf check [OPTIONS] MESH       is a mesh a valid closed surface?",
+      "molsurf"};
+  app.set_version_flag("--version", "molsurf " MOLSURF_VERSION);
+  app.require_subcommand(0, 1);
+  app.get_formatter()->column_width(34);
+
+  SurfaceCommand surface;
+  surface.add_options(app);
+
+  CheckCommand check;
+  CLI::App* check_app = app.add_subcommand(
+      "check",
+      "Read any mesh (.stl .off .ply .obj .vtk .vtp) and report whether it is a valid closed surface:\n"
+      "closed, edge- and vertex-manifold, consistently oriented outward, no degenerate face and\n"
+      "no self-intersection (decided with exact predicates). Exit status 0 only for a valid surface.");
+  check.add_options(*check_app);
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (check_app->parsed()) return check.run();
+    if (surface.structure.empty()) {
+      std::cerr << "molsurf: no structure file given\nRun with --help for more information.\n";
+      return 2;
+    }
+    return surface.run();
+  } catch (const molsurf::Error& e) {
+    std::cerr << "molsurf: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "molsurf: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,97 @@
+#pragma once
+// A minimal streaming JSON writer for reports: objects, arrays, strings, numbers, booleans.
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <type_traits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace molsurf::io {
+
+class JsonWriter {
+ public:
+  JsonWriter& begin_object() { open('{'); return *this; }
+  JsonWriter& end_object() { close('}'); return *this; }
+  JsonWriter& begin_array() { open('['); return *this; }
+  JsonWriter& end_array() { close(']'); return *this; }
+
+  JsonWriter& key(std::string_view name) {
+    separate();
+    write_string(name);
+    out_ += ": ";
+    after_key_ = true;
+    return *this;
+  }
+  JsonWriter& value(std::string_view s) { separate(); write_string(s); return *this; }
+  JsonWriter& value(const char* s) { return value(std::string_view(s)); }
+  JsonWriter& value(bool b) { separate(); out_ += b ? "true" : "false"; return *this; }
+  JsonWriter& value(double d) {
+    separate();
+    if (!std::isfinite(d)) { out_ += "null"; return *this; }
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d);
+    out_.append(buf, end);
+    return *this;
+  }
+  template <typename Int>
+    requires std::is_integral_v<Int> && (!std::is_same_v<Int, bool>)
+  JsonWriter& value(Int i) { separate(); out_ += std::to_string(i); return *this; }
+
+  template <typename T>
+  JsonWriter& field(std::string_view name, const T& v) { key(name); return value(v); }
+
+  std::string str() const { return out_ + "\n"; }
+
+ private:
+  void open(char c) {
+    separate();
+    out_ += c;
+    first_.push_back(true);
+  }
+  void close(char c) {
+    const bool empty = first_.back();
+    first_.pop_back();
+    if (!empty) newline();
+    out_ += c;
+  }
+  void separate() {
+    if (after_key_) { after_key_ = false; return; }
+    if (first_.empty()) return;
+    if (!first_.back()) out_ += ',';
+    first_.back() = false;
+    newline();
+  }
+  void newline() {
+    out_ += '\n';
+    out_.append(2 * first_.size(), ' ');
+  }
+  void write_string(std::string_view s) {
+    out_ += '"';
+    for (char c : s) {
+      switch (c) {
+        case '"': out_ += "\\\""; break;
+        case '\\': out_ += "\\\\"; break;
+        case '\n': out_ += "\\n"; break;
+        case '\t': out_ += "\\t"; break;
+        default:
+          if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out_ += buf;
+          } else {
+            out_ += c;
+          }
+      }
+    }
+    out_ += '"';
+  }
+
+  std::string out_;
+  std::vector<bool> first_;
+  bool after_key_ = false;
+};
+
+}  // namespace molsurf::io

@@ -1,0 +1,127 @@
+// End-to-end: the molsurf command as a user runs it.
+#include <gtest/gtest.h>
+
+#include "cli_runner.hpp"
+#include "mesh_fixtures.hpp"
+#include "molsurf/icosphere.hpp"
+#include "molsurf/io.hpp"
+
+namespace molsurf {
+namespace {
+
+using testing::run_molsurf;
+using testing::TempDir;
+
+const std::string kData = MOLSURF_DATA_DIR;
+
+TEST(Cli, HelpExplainsEveryOptionWithItsDefault) {
+  TempDir dir;
+  const auto r = run_molsurf("--help", dir.path());
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* option : {"--output", "--model", "--chains", "--keep-water", "--hydrogens", "--no-hetatm",
+                             "--radius-set", "--radii", "--probe", "--density", "--frequency",
+                             "--area-corrected", "--quiet", "--version", "check"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  EXPECT_NE(r.out.find("1.4"), std::string::npos);      // probe default
+  EXPECT_NE(r.out.find("protor"), std::string::npos);   // radius set default
+  const auto check = run_molsurf("check --help", dir.path());
+  EXPECT_EQ(check.exit_code, 0);
+  EXPECT_NE(check.out.find("--json"), std::string::npos);
+}
+
+TEST(Cli, VersionIsPrinted) {
+  TempDir dir;
+  const auto r = run_molsurf("--version", dir.path());
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find(MOLSURF_VERSION), std::string::npos);
+}
+
+TEST(Cli, StructureSummaryOfHaemoglobin) {
+  TempDir dir;
+  const auto r = run_molsurf("'" + kData + "/pdb/2hhb.pdb'", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("4558 kept"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("221 water"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FE 4"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no surface was written"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "2hhb.vtp"));
+}
+
+TEST(Cli, SelectionOptionsReachTheReader) {
+  TempDir dir;
+  const auto r = run_molsurf("--chains A --no-hetatm '" + kData + "/pdb/2hhb.pdb'", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("other chains"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("4558 kept"), std::string::npos) << r.out;
+}
+
+TEST(Cli, MissingStructureIsAClearError) {
+  TempDir dir;
+  const auto r = run_molsurf("no_such_file.pdb", dir.path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no_such_file.pdb"), std::string::npos) << r.err;
+}
+
+TEST(Cli, UnknownOutputFormatIsRejectedBeforeAnyWork) {
+  TempDir dir;
+  const auto r = run_molsurf("-o out.xyz '" + kData + "/pdb/1crn.pdb'", dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("out.xyz"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.xyz"));
+}
+
+TEST(Cli, MalformedStructureNamesFileAndLine) {
+  TempDir dir;
+  {
+    std::ofstream bad(dir.path() / "bad.xyzr");
+    bad << "1 2 3 1.5\n4 5 six 1.5\n";
+  }
+  const auto r = run_molsurf("bad.xyzr", dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.xyzr:2"), std::string::npos) << r.err;
+}
+
+TEST(Cli, CheckSaysValidForEveryFormatWrittenFromAnIcosphere) {
+  TempDir dir;
+  const Mesh sphere = make_icosphere({1, 2, 3}, 2.5, {.frequency = 4, .tag = 0});
+  for (const char* name : {"s.vtp", "s.vtk", "s.ply", "s.off", "s.stl", "s.obj"}) {
+    write_mesh(dir.path() / name, sphere);
+    const auto r = run_molsurf(std::string("check ") + name, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("VALID"), std::string::npos) << name;
+    EXPECT_NE(r.out.find("320"), std::string::npos) << name;  // faces
+  }
+}
+
+TEST(Cli, CheckNamesTheDefectOfABrokenMesh) {
+  TempDir dir;
+  Mesh holed = make_icosphere({}, 1, {.frequency = 2});
+  holed.faces.pop_back();
+  write_mesh(dir.path() / "holed.off", holed);
+  auto r = run_molsurf("check holed.off", dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("INVALID"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("boundary"), std::string::npos) << r.out;
+
+  Mesh crossing = fixtures::unit_cube();
+  crossing.append(fixtures::box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}));
+  write_mesh(dir.path() / "crossing.ply", crossing);
+  r = run_molsurf("check --json crossing.ply", dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("\"valid\": false"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("\"intersecting_pairs\": 0,"), std::string::npos) << r.out;
+}
+
+TEST(Cli, CheckOfAnUnreadableFileIsAnError) {
+  TempDir dir;
+  {
+    std::ofstream bad(dir.path() / "bad.off");
+    bad << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+  }
+  const auto r = run_molsurf("check bad.off", dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.off"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace molsurf
