@@ -1,0 +1,85 @@
+#include "geometry/implicit_point.hpp"
+
+#include "geometry/predicates.hpp"
+
+namespace molsurf::geometry {
+
+namespace {
+
+using IVec = std::array<Interval, 3>;
+
+IVec to_interval(const Vec3& v) { return {Interval(v.x), Interval(v.y), Interval(v.z)}; }
+IVec sub(const IVec& a, const IVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Interval det3(const IVec& u, const IVec& v, const IVec& w) {  // w . (u x v)
+  return w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
+}
+
+using QVec = std::array<mpq_class, 3>;
+QVec to_rational(const Vec3& v) { return {mpq_class(v.x), mpq_class(v.y), mpq_class(v.z)}; }
+QVec sub(const QVec& a, const QVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+mpq_class det3(const QVec& u, const QVec& v, const QVec& w) {
+  return w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
+}
+
+}  // namespace
+
+ImplicitPoint ImplicitPoint::explicit_point(const Vec3& v) {
+  ImplicitPoint point;
+  point.def_[0] = v;
+  point.box_ = to_interval(v);
+  return point;
+}
+
+ImplicitPoint ImplicitPoint::line_plane(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  ImplicitPoint point;
+  point.is_lpi_ = true;
+  point.def_ = {p, q, a, b, c};
+  // P = p + t (q - p), t = det[b-a, c-a, p-a] / (det[b-a, c-a, p-a] - det[b-a, c-a, q-a]).
+  const IVec ia = to_interval(a), ip = to_interval(p), iq = to_interval(q);
+  const IVec u = sub(to_interval(b), ia), v = sub(to_interval(c), ia);
+  const Interval dp = det3(u, v, sub(ip, ia)), dq = det3(u, v, sub(iq, ia));
+  const Interval t = dp / (dp - dq);
+  for (int i = 0; i < 3; ++i) point.box_[i] = ip[i] + t * (iq[i] - ip[i]);
+  return point;
+}
+
+ExactPoint ImplicitPoint::exact() const {
+  if (!is_lpi_) return {mpq_class(def_[0].x), mpq_class(def_[0].y), mpq_class(def_[0].z)};
+  const QVec p = to_rational(def_[0]), q = to_rational(def_[1]), a = to_rational(def_[2]);
+  const QVec u = sub(to_rational(def_[3]), a), v = sub(to_rational(def_[4]), a);
+  const mpq_class dp = det3(u, v, sub(p, a)), dq = det3(u, v, sub(q, a));
+  const mpq_class t = dp / (dp - dq);
+  return {p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2])};
+}
+
+Vec3 ImplicitPoint::rounded() const {
+  if (!is_lpi_) return def_[0];
+  const ExactPoint e = exact();
+  return {e.x.get_d(), e.y.get_d(), e.z.get_d()};
+}
+
+int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, int u, int v) {
+  if (a.is_explicit() && b.is_explicit() && c.is_explicit()) {
+    const Vec3 &pa = a.explicit_value(), &pb = b.explicit_value(), &pc = c.explicit_value();
+    return geometry::orient2d(pa[u], pa[v], pb[u], pb[v], pc[u], pc[v]);
+  }
+  const Interval filtered = (b.coordinate(u) - a.coordinate(u)) * (c.coordinate(v) - a.coordinate(v)) -
+                            (b.coordinate(v) - a.coordinate(v)) * (c.coordinate(u) - a.coordinate(u));
+  if (const int s = filtered.certain_sign()) return s;
+  const ExactPoint ea = a.exact(), eb = b.exact(), ec = c.exact();
+  const mpq_class det = (eb[u] - ea[u]) * (ec[v] - ea[v]) - (eb[v] - ea[v]) * (ec[u] - ea[u]);
+  return sgn(det);
+}
+
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d) {
+  if (d.is_explicit()) return geometry::orient3d(a, b, c, d.explicit_value());
+  const IVec ia = to_interval(a);
+  const IVec id = {d.coordinate(0), d.coordinate(1), d.coordinate(2)};
+  const Interval filtered = det3(sub(to_interval(b), ia), sub(to_interval(c), ia), sub(id, ia));
+  if (const int s = filtered.certain_sign()) return s;
+  const ExactPoint e = d.exact();
+  const QVec qa = to_rational(a);
+  return sgn(det3(sub(to_rational(b), qa), sub(to_rational(c), qa), sub(QVec{e.x, e.y, e.z}, qa)));
+}
+
+}  // namespace molsurf::geometry

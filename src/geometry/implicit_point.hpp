@@ -1,0 +1,51 @@
+#pragma once
+// Points of the arrangement of two meshes, defined by the input doubles that make them
+// (DESIGN: "implicit points"): an input vertex, or the crossing of the line through two
+// input points p, q with the plane through three input points a, b, c (LPI). Predicates
+// on them are signs of polynomials in the input doubles: decided by interval arithmetic
+// first, and by exact GMP rationals when the interval cannot tell. The double
+// coordinates of an LPI point are only an output (rounded after every decision).
+#include <array>
+#include <gmpxx.h>
+
+#include "geometry/interval.hpp"
+#include "molsurf/vec3.hpp"
+
+namespace molsurf::geometry {
+
+struct ExactPoint {
+  mpq_class x, y, z;
+  const mpq_class& operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+};
+
+class ImplicitPoint {
+ public:
+  static ImplicitPoint explicit_point(const Vec3& v);
+  // The line pq must cross the plane abc at exactly one point (orient3d(a,b,c,p) !=
+  // orient3d(a,b,c,q) exactly); the caller has decided that with exact predicates.
+  static ImplicitPoint line_plane(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c);
+
+  bool is_explicit() const { return !is_lpi_; }
+  const Vec3& explicit_value() const { return def_[0]; }  // explicit points only
+  const std::array<Vec3, 5>& definition() const { return def_; }  // p, q, a, b, c
+  const Interval& coordinate(int axis) const { return box_[axis]; }
+
+  ExactPoint exact() const;
+  // Within one ulp of the exact point in each coordinate (GMP truncates toward zero);
+  // the input itself for explicit points.
+  Vec3 rounded() const;
+
+ private:
+  std::array<Vec3, 5> def_{};
+  std::array<Interval, 3> box_{};
+  bool is_lpi_ = false;
+};
+
+// orient2d of three points projected on the coordinate plane (u, v), u, v in {0,1,2}:
+// sign of (b-a)_u (c-a)_v - (b-a)_v (c-a)_u.
+int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, int u, int v);
+// orient3d(a, b, c, d) with input points a, b, c and an implicit point d (convention of
+// predicates.hpp: +1 when d is on the side (b-a)x(c-a) points to).
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d);
+
+}  // namespace molsurf::geometry
