@@ -104,7 +104,7 @@ TEST(Cli, CheckNamesTheDefectOfABrokenMesh) {
   EXPECT_NE(r.out.find("boundary"), std::string::npos) << r.out;
 
   Mesh crossing = fixtures::unit_cube();
-  crossing.append(fixtures::box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}));
+  crossing.append(fixtures::box({0.3, 0.4, 0.45}, {1.3, 1.4, 1.45}));
   write_mesh(dir.path() / "crossing.ply", crossing);
   r = run_molsurf("check --json crossing.ply", dir.path());
   EXPECT_EQ(r.exit_code, 1);

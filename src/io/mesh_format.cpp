@@ -1,0 +1,181 @@
+// Format detection from file names, and the helpers every mesh format shares.
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "io/mesh_formats.hpp"
+#include "molsurf/error.hpp"
+
+namespace molsurf {
+
+MeshFormat mesh_format_from_path(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".vtp") return MeshFormat::vtp;
+  if (extension == ".vtk") return MeshFormat::vtk;
+  if (extension == ".ply") return MeshFormat::ply;
+  if (extension == ".off") return MeshFormat::off;
+  if (extension == ".stl") return MeshFormat::stl;
+  if (extension == ".obj") return MeshFormat::obj;
+  if (extension == ".vert" || extension == ".face") return MeshFormat::msms;
+  if (extension == ".msh") return MeshFormat::msh;
+  fail(path, "unknown mesh format '" + extension +
+                 "' (expected .vtp .vtk .ply .off .stl .obj .vert/.face or .msh)");
+}
+
+const char* mesh_format_name(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::vtp: return "VTK XML PolyData (.vtp)";
+    case MeshFormat::vtk: return "legacy VTK (.vtk)";
+    case MeshFormat::ply: return "PLY (.ply)";
+    case MeshFormat::off: return "OFF (.off)";
+    case MeshFormat::stl: return "STL (.stl)";
+    case MeshFormat::obj: return "Wavefront OBJ (.obj)";
+    case MeshFormat::msms: return "MSMS (.vert/.face)";
+    case MeshFormat::msh: return "gmsh 2.2 (.msh)";
+  }
+  return "unknown";
+}
+
+}  // namespace molsurf
+
+namespace molsurf::mesh_io {
+
+void check_writable(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+  const std::size_t vertex_count = mesh.vertex_count();
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (Index v : mesh.faces[f])
+      if (v >= vertex_count)
+        fail(file, "cannot write: face " + std::to_string(f) + " uses vertex " + std::to_string(v) +
+                       " of a mesh with " + std::to_string(vertex_count) + " vertices");
+  if (mesh.has_tags() && mesh.face_tags.size() != mesh.face_count())
+    fail(file, "cannot write: " + std::to_string(mesh.face_tags.size()) + " face tags for " +
+                   std::to_string(mesh.face_count()) + " faces");
+  if (options.atoms.empty()) return;
+  for (std::size_t f = 0; f < mesh.face_tags.size(); ++f) {
+    const std::int32_t tag = mesh.face_tags[f];
+    if (tag != kNoTag && (tag < 0 || static_cast<std::size_t>(tag) >= options.atoms.size()))
+      fail(file, "cannot write: face " + std::to_string(f) + " has tag " + std::to_string(tag) +
+                     ", not an index into the " + std::to_string(options.atoms.size()) + " atoms");
+  }
+}
+
+std::string read_file_bytes(const path& file) {
+  errno = 0;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) fail(file, std::string("cannot read: ") + (errno ? std::strerror(errno) : "cannot open"));
+  std::error_code error;
+  if (std::filesystem::is_directory(file, error)) fail(file, "cannot read: Is a directory");
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) fail(file, "cannot read: read error");
+  return std::move(content).str();
+}
+
+void append_number(std::string& out, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+void append_number(std::string& out, float value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t i = 0;
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+  while (i < line.size()) {
+    while (i < line.size() && blank(line[i])) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !blank(line[i])) ++i;
+    if (i > start) fields.push_back(line.substr(start, i - start));
+  }
+  return fields;
+}
+
+namespace {
+
+std::string quoted(std::string_view text) {
+  constexpr std::size_t kMaxShown = 40;
+  std::string shown(text.substr(0, kMaxShown));
+  for (char& c : shown)
+    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+  return "'" + shown + (text.size() > kMaxShown ? "...'" : "'");
+}
+
+}  // namespace
+
+double parse_double(std::string_view text, const path& file, std::size_t line, std::string_view what) {
+  // from_chars rejects a leading '+', which some writers emit.
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  double value = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (result.ec == std::errc::result_out_of_range)
+    fail(file, line, std::string(what) + ": number out of range " + quoted(text));
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size())
+    fail(file, line, std::string(what) + ": expected a number, found " + quoted(text));
+  if (!std::isfinite(value)) fail(file, line, std::string(what) + ": non-finite number " + quoted(text));
+  return value;
+}
+
+long long parse_integer(std::string_view text, const path& file, std::size_t line, std::string_view what) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  long long value = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (result.ec == std::errc::result_out_of_range)
+    fail(file, line, std::string(what) + ": integer out of range " + quoted(text));
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size())
+    fail(file, line, std::string(what) + ": expected an integer, found " + quoted(text));
+  return value;
+}
+
+bool LineReader::next(std::string_view& line) {
+  if (position_ >= text_.size()) return false;
+  std::size_t end = text_.find('\n', position_);
+  if (end == std::string::npos) end = text_.size();
+  line = std::string_view(text_).substr(position_, end - position_);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  position_ = end + 1;
+  ++line_number_;
+  return true;
+}
+
+void LineReader::fail_here(const std::string& problem) const { fail(file_, line_number_, problem); }
+
+void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t vertex_count,
+                 const path& file, std::size_t line, int first_index) {
+  if (polygon.size() < 3)
+    fail(file, line, "face with " + std::to_string(polygon.size()) + " vertices (need at least 3)");
+  for (long long v : polygon)
+    if (v < 0 || static_cast<unsigned long long>(v) >= vertex_count)
+      fail(file, line, "vertex index " + std::to_string(v + first_index) + " out of range (" +
+                           std::to_string(first_index) + ".." +
+                           std::to_string(static_cast<long long>(vertex_count) - 1 + first_index) + ")");
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+    mesh.faces.push_back({static_cast<Index>(polygon[0]), static_cast<Index>(polygon[i]),
+                          static_cast<Index>(polygon[i + 1])});
+}
+
+void check_finite_vertices(const Mesh& mesh, const path& file) {
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const Vec3& p = mesh.vertices[v];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      fail(file, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+  }
+}
+
+bool host_is_little_endian() { return std::endian::native == std::endian::little; }
+
+}  // namespace molsurf::mesh_io

@@ -1,0 +1,85 @@
+#pragma once
+// Internal: one reader/writer pair per mesh format (mesh_FORMAT.cpp), and the small
+// text and binary helpers they share (mesh_format.cpp). Every writer goes through
+// AtomicFile; every reader reports problems as "FILE:LINE: problem" via molsurf::fail.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "molsurf/io.hpp"
+
+namespace molsurf::mesh_io {
+
+using std::filesystem::path;
+
+void write_vtp(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_vtk(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_ply(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_off(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_stl(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_obj(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_msms(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_msh(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+
+Mesh read_vtp(const path& file);
+Mesh read_vtk(const path& file);
+Mesh read_ply(const path& file);
+Mesh read_off(const path& file);
+Mesh read_stl(const path& file);
+Mesh read_obj(const path& file);
+Mesh read_msms(const path& file);
+Mesh read_msh(const path& file);
+
+// ---- shared helpers --------------------------------------------------------------
+
+// Throws unless every index is a vertex, tags are absent or one per face, and (when
+// atoms are given) every tag is kNoTag or an atom index: writers index with them.
+void check_writable(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+
+// The whole file as bytes; throws "FILE: cannot read: REASON".
+std::string read_file_bytes(const path& file);
+
+// Shortest text that parses back to exactly the same double (or float).
+void append_number(std::string& out, double value);
+void append_number(std::string& out, float value);
+
+// Splits on blanks (space, tab, CR).
+std::vector<std::string_view> split_fields(std::string_view line);
+
+// Parsers that name the file and line in their errors; `what` says which field.
+double parse_double(std::string_view text, const path& file, std::size_t line, std::string_view what);
+long long parse_integer(std::string_view text, const path& file, std::size_t line, std::string_view what);
+
+// Lines of a text file with their 1-based numbers; the trailing '\r' is dropped.
+class LineReader {
+ public:
+  LineReader(const path& file, std::string text) : file_(file), text_(std::move(text)) {}
+  bool next(std::string_view& line);
+  std::size_t line_number() const { return line_number_; }
+  const path& file() const { return file_; }
+  [[noreturn]] void fail_here(const std::string& problem) const;
+
+ private:
+  path file_;
+  std::string text_;
+  std::size_t position_ = 0;
+  std::size_t line_number_ = 0;
+};
+
+// Converts a polygon's vertex list to triangles (v0, vi, vi+1), checking each index
+// against `vertex_count`; `line` may be 0 for binary formats. Indices are 0-based;
+// `first_index` (1 for OBJ, MSMS, gmsh) only makes the error message quote the file's numbering.
+void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t vertex_count,
+                 const path& file, std::size_t line, int first_index = 0);
+
+// Rejects non-finite coordinates, which no geometry downstream can use.
+void check_finite_vertices(const Mesh& mesh, const path& file);
+
+// Little-endian helpers for binary formats (the host may be either).
+bool host_is_little_endian();
+
+}  // namespace molsurf::mesh_io

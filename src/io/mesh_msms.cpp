@@ -1,0 +1,177 @@
+// MSMS's triangulated-surface pair, the input of BEM solvers such as TABI-PB and PyGBe:
+//   NAME.vert  x y z nx ny nz face_number closest_sphere type      "%9.3f x6 %7d %7d %2d"
+//   NAME.face  v1 v2 v3 (1-based) type face_number               "%6d x3 %2d %6d"
+// each after a 3-line header (comment, column legend, "count #spheres density probe").
+// MSMS prints coordinates with 3 decimals, and tools parse that layout, so this format
+// is lossy (0.0005 A); use .vtp/.ply/.msh for exact coordinates.
+//
+// What we put in MSMS's columns: the closest sphere is the nearest atom by |p-c|-r
+// among the atoms tagging the faces around the vertex (face tag + 1 without atoms, 0
+// when untagged); a face's "analytical face number" is its tag + 1 (the atom patch it
+// lies on, 0 untagged). MSMS's type codes classify SES patches (contact, toric,
+// reentrant), which a union of atom spheres does not have: every row gets type 1.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "io/atomic_file.hpp"
+#include "io/mesh_formats.hpp"
+#include "molsurf/error.hpp"
+
+namespace molsurf::mesh_io {
+
+namespace {
+
+constexpr int kPatchType = 1;
+
+struct PairPaths {
+  path vert;
+  path face;
+};
+
+PairPaths pair_paths(const path& file) {
+  path stem = file;
+  const std::string extension = file.extension().string();
+  if (extension == ".vert" || extension == ".face") stem.replace_extension();
+  return {path(stem).concat(".vert"), path(stem).concat(".face")};
+}
+
+// 1-based closest sphere per vertex (0: none); see the file comment.
+std::vector<long long> closest_spheres(const Mesh& mesh, std::span<const Atom> atoms) {
+  std::vector<long long> closest(mesh.vertex_count(), 0);
+  if (!mesh.has_tags()) return closest;
+  std::vector<double> best(mesh.vertex_count(), std::numeric_limits<double>::infinity());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const std::int32_t tag = mesh.face_tags[f];
+    if (tag < 0) continue;
+    for (Index v : mesh.faces[f]) {
+      // Without atoms the lowest tag wins, so the choice does not depend on face order.
+      const double distance = atoms.empty() ? static_cast<double>(tag)
+                                            : norm(mesh.vertices[v] - atoms[tag].centre) - atoms[tag].radius;
+      if (distance < best[v] || (distance == best[v] && tag + 1 < closest[v])) {
+        best[v] = distance;
+        closest[v] = tag + 1;
+      }
+    }
+  }
+  return closest;
+}
+
+std::size_t sphere_count(const Mesh& mesh, std::span<const Atom> atoms) {
+  if (!atoms.empty()) return atoms.size();
+  std::int32_t highest = kNoTag;
+  for (std::int32_t tag : mesh.face_tags) highest = std::max(highest, tag);
+  return static_cast<std::size_t>(highest + 1);
+}
+
+template <class... Args>
+void append_formatted(std::string& out, const char* format, Args... args) {
+  char buffer[160];
+  const int length = std::snprintf(buffer, sizeof buffer, format, args...);
+  out.append(buffer, static_cast<std::size_t>(std::clamp(length, 0, static_cast<int>(sizeof buffer) - 1)));
+}
+
+// Calls on_row(fields, line) for each data row of one file of the pair, after MSMS's
+// header when there is one (comment lines, then "count #spheres density probe"), and
+// checks the row count against the header's.
+template <class OnRow>
+void for_each_row(const path& file, std::string text, const char* what, OnRow on_row) {
+  LineReader lines(file, std::move(text));
+  std::string_view line;
+  bool expecting_counts = false;
+  long long declared = -1;
+  std::size_t count_line = 0;
+  std::size_t rows = 0;
+  while (lines.next(line)) {
+    const std::vector<std::string_view> fields = split_fields(line);
+    if (fields.empty()) continue;
+    if (rows == 0 && declared < 0 && fields[0].front() == '#') {
+      expecting_counts = true;
+      continue;
+    }
+    if (expecting_counts) {
+      expecting_counts = false;
+      count_line = lines.line_number();
+      declared = parse_integer(fields[0], file, count_line, std::string("number of ") + what);
+      if (declared < 0) lines.fail_here("negative count");
+      continue;
+    }
+    if (fields.size() < 3) lines.fail_here(std::string(what) + " line needs at least 3 fields");
+    on_row(fields, lines.line_number());
+    ++rows;
+  }
+  if (declared >= 0 && static_cast<std::size_t>(declared) != rows)
+    fail(file, count_line, "header declares " + std::to_string(declared) + " " + what + ", file has " +
+                               std::to_string(rows));
+}
+
+}  // namespace
+
+void write_msms(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+  const PairPaths paths = pair_paths(file);
+  const std::vector<Vec3> normals = vertex_normals(mesh);
+  const std::vector<long long> closest = closest_spheres(mesh, options.atoms);
+  const std::size_t spheres = sphere_count(mesh, options.atoms);
+
+  std::string vert;
+  vert.reserve(mesh.vertex_count() * 82 + 256);
+  if (options.msms_header) {
+    vert += "# MSMS solvent excluded surface vertices (molsurf " MOLSURF_VERSION ": surface by mesh union)\n";
+    vert += "#vertex #sphere density probe_r\n";
+    append_formatted(vert, "%7zu %7zu %5.2f %5.2f\n", mesh.vertex_count(), spheres, options.density,
+                     options.probe_radius);
+  }
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const Vec3& p = mesh.vertices[v];
+    const Vec3& n = normals[v];
+    append_formatted(vert, "%9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %7d %7lld %2d\n", p.x, p.y, p.z, n.x, n.y, n.z, 0,
+                     closest[v], kPatchType);
+  }
+
+  std::string face;
+  face.reserve(mesh.face_count() * 32 + 256);
+  if (options.msms_header) {
+    face += "# MSMS solvent excluded surface faces (molsurf " MOLSURF_VERSION ": surface by mesh union)\n";
+    face += "#faces  #sphere density probe_r\n";
+    append_formatted(face, "%7zu %7zu %5.2f %5.2f\n", mesh.face_count(), spheres, options.density,
+                     options.probe_radius);
+  }
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const Triangle& t = mesh.faces[f];
+    append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, kPatchType,
+                     std::max(mesh.tag(f), kNoTag) + 1);
+  }
+
+  // Both files are complete before either replaces an old one.
+  AtomicFile vert_file(paths.vert);
+  AtomicFile face_file(paths.face);
+  vert_file.write(vert);
+  face_file.write(face);
+  vert_file.commit();
+  face_file.commit();
+}
+
+Mesh read_msms(const path& file) {
+  const PairPaths paths = pair_paths(file);
+  std::string vert_text = read_file_bytes(paths.vert);
+  std::string face_text = read_file_bytes(paths.face);
+  Mesh mesh;
+  for_each_row(paths.vert, std::move(vert_text), "vertices",
+               [&](const std::vector<std::string_view>& f, std::size_t n) {
+                 mesh.vertices.push_back({parse_double(f[0], paths.vert, n, "x"),
+                                          parse_double(f[1], paths.vert, n, "y"),
+                                          parse_double(f[2], paths.vert, n, "z")});
+               });
+  for_each_row(paths.face, std::move(face_text), "faces", [&](const std::vector<std::string_view>& f, std::size_t n) {
+    long long corners[3];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const long long one_based = parse_integer(f[k], paths.face, n, "vertex index");
+      corners[k] = one_based > 0 ? one_based - 1 : -1;  // add_polygon rejects it, quoting 0
+    }
+    add_polygon(mesh, corners, mesh.vertices.size(), paths.face, n, 1);
+  });
+  return mesh;
+}
+
+}  // namespace molsurf::mesh_io

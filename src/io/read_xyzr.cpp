@@ -1,0 +1,57 @@
+// MSMS sphere lists: "x y z r [name]" per line. Blank lines and '#' comments are allowed;
+// anything after the radius is taken as the sphere's name (MSMS .xyzrn files put
+// "1 NAME" there, hence the join).
+#include <string>
+#include <string_view>
+
+#include "io/structure_readers.hpp"
+#include "molsurf/error.hpp"
+
+namespace molsurf::detail {
+
+std::vector<Atom> read_xyzr(const std::filesystem::path& path) {
+  const std::string text = read_text_file(path);
+  std::vector<Atom> atoms;
+  std::size_t line_number = 0;
+  std::string_view rest = text;
+  while (!rest.empty()) {
+    const std::size_t end = rest.find('\n');
+    std::string_view line = rest.substr(0, end);
+    rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
+    ++line_number;
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    const std::vector<std::string_view> fields = split_fields(line);
+    if (fields.empty()) continue;
+    if (fields.size() < 4)
+      fail(path, line_number,
+           "expected 'x y z r [name]', found " + std::to_string(fields.size()) + " field" +
+               (fields.size() == 1 ? "" : "s"));
+    double values[4];
+    constexpr const char* value_names[] = {"x", "y", "z", "radius"};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::optional<double> value = parse_double(fields[i]);
+      if (!value)
+        fail(path, line_number,
+             std::string(value_names[i]) + " '" + std::string(fields[i]) + "' is not a number");
+      values[i] = *value;
+    }
+    if (values[3] <= 0)
+      fail(path, line_number, "radius must be positive, found " + std::string(fields[3]));
+    Atom atom;
+    atom.centre = {values[0], values[1], values[2]};
+    atom.radius = values[3];
+    for (std::size_t i = 4; i < fields.size(); ++i) {
+      if (!atom.atom_name.empty()) atom.atom_name += ' ';
+      atom.atom_name += fields[i];
+    }
+    // Without residues, an element guessed from a plain atom name ("CA") could be wrong;
+    // it is only informative here since the radius is given.
+    atom.element = atom.atom_name.empty() ? "X" : infer_element(fields.back(), "");
+    atoms.push_back(std::move(atom));
+  }
+  if (atoms.empty()) fail(path, "no spheres (expected lines 'x y z r [name]')");
+  return atoms;
+}
+
+}  // namespace molsurf::detail

@@ -1,0 +1,50 @@
+#pragma once
+// Internal: the format readers behind read_structure(). Each reader turns a file into the
+// atom records of one model, unfiltered; selection and radii are decided in one place
+// (read_structure.cpp) so every format follows the same rules.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "molsurf/atoms.hpp"
+
+namespace molsurf::detail {
+
+struct AtomRecord {
+  Atom atom;          // radius is set only by formats that carry one (PQR, xyzr)
+  char altloc = '\0';  // '\0' when the atom has a single conformer
+};
+
+struct ModelRecords {
+  std::vector<AtomRecord> records;  // the chosen model, in file order
+  std::vector<int> model_numbers;   // every model in the file, as written, in file order
+  int model_used = 1;
+};
+
+// PDB or mmCIF, plain or gzipped. The only translation unit that includes gemmi.
+ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
+                             std::optional<int> model);
+ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model);
+// Spheres as given: x y z r [name]; radii are already set.
+std::vector<Atom> read_xyzr(const std::filesystem::path& path);
+
+// Small text helpers shared by the PQR, xyzr and radius-table parsers.
+std::vector<std::string_view> split_fields(std::string_view line);  // on spaces and tabs
+std::optional<double> parse_double(std::string_view field);  // whole field, finite, '+' allowed
+std::optional<int> parse_int(std::string_view field);        // whole field
+
+// The file's whole content; fails with a clear message when it cannot be read.
+std::string read_text_file(const std::filesystem::path& path);
+
+// Element (upper case) from an atom name when the file gives none, following gemmi's rule
+// for PDB names with the alignment lost (PQR, xyzr): see read_structure.cpp.
+std::string infer_element(std::string_view atom_name, std::string_view residue_name);
+
+// "model 3 not found; models in the file: 1, 2" style failure.
+[[noreturn]] void fail_unknown_model(const std::filesystem::path& path, int requested,
+                                     const std::vector<int>& available);
+
+}  // namespace molsurf::detail

@@ -1,0 +1,144 @@
+// AtomicFile: a target is replaced whole or left alone, and no temporary is left behind.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+#include "molsurf/error.hpp"
+
+namespace fs = std::filesystem;
+using molsurf::AtomicFile;
+
+namespace {
+
+class AtomicFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "molsurf_atomic_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::size_t entries() const {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+  }
+  static std::string slurp(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  static void put(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
+
+  fs::path dir_;
+};
+
+TEST_F(AtomicFileTest, WritesAndCommits) {
+  const fs::path target = dir_ / "out.txt";
+  molsurf::write_file_atomically(target, "hello\n");
+  EXPECT_EQ(slurp(target), "hello\n");
+  EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFileTest, TemporaryIsBesideTargetAndHidden) {
+  const fs::path target = dir_ / "x.vtp";
+  AtomicFile file(target);
+  EXPECT_EQ(file.temp_path().parent_path(), dir_);
+  EXPECT_EQ(file.temp_path().filename().string().rfind(".x.vtp.tmp-", 0), 0u) << file.temp_path();
+  EXPECT_TRUE(fs::exists(file.temp_path()));
+  EXPECT_FALSE(fs::exists(target));
+}
+
+TEST_F(AtomicFileTest, TwoWritersOfOneTargetGetDistinctTemporaries) {
+  AtomicFile first(dir_ / "t");
+  AtomicFile second(dir_ / "t");
+  EXPECT_NE(first.temp_path(), second.temp_path());
+}
+
+TEST_F(AtomicFileTest, MissingDirectoryThrowsWithNameAndReasonAndLeavesNothing) {
+  const fs::path target = dir_ / "missing" / "x.vtp";
+  try {
+    molsurf::write_file_atomically(target, "data");
+    FAIL() << "expected molsurf::Error";
+  } catch (const molsurf::Error& error) {
+    EXPECT_EQ(std::string(error.what()), target.string() + ": cannot write: No such file or directory");
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "missing"));
+  EXPECT_EQ(entries(), 0u);
+}
+
+TEST_F(AtomicFileTest, FailureMidWriteLeavesOldTargetAndNoTemporary) {
+  const fs::path target = dir_ / "report.json";
+  put(target, "old content");
+  const auto produce = [](std::ostream& out) {
+    out << "half of the new";
+    throw std::runtime_error("producer failed");
+  };
+  EXPECT_THROW(
+      {
+        AtomicFile file(target);
+        produce(file.stream());
+        file.commit();
+      },
+      std::runtime_error);
+  EXPECT_EQ(slurp(target), "old content");
+  EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFileTest, UncommittedWriteLeavesNoTarget) {
+  const fs::path target = dir_ / "never.txt";
+  {
+    AtomicFile file(target);
+    file.write("data");
+  }
+  EXPECT_FALSE(fs::exists(target));
+  EXPECT_EQ(entries(), 0u);
+}
+
+TEST_F(AtomicFileTest, OverwriteReplacesTheWholeFile) {
+  const fs::path target = dir_ / "mesh.off";
+  put(target, std::string(10000, 'x'));
+  molsurf::write_file_atomically(target, "short");
+  EXPECT_EQ(slurp(target), "short");
+  EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFileTest, LibraryWritingToTempPathIsCommitted) {
+  const fs::path target = dir_ / "lib.bin";
+  AtomicFile file(target);
+  put(file.temp_path(), "written by a library");
+  file.commit();
+  EXPECT_TRUE(file.committed());
+  EXPECT_EQ(slurp(target), "written by a library");
+  EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFileTest, RenameOntoADirectoryFailsAndCleansUp) {
+  const fs::path target = dir_ / "occupied";
+  fs::create_directory(target);
+  fs::create_directory(target / "child");  // a non-empty directory cannot be replaced
+  try {
+    molsurf::write_file_atomically(target, "data");
+    FAIL() << "expected molsurf::Error";
+  } catch (const molsurf::Error& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(target.string() + ": cannot write: ", 0), 0u) << error.what();
+  }
+  EXPECT_TRUE(fs::is_directory(target));
+  EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFileTest, ReadOnlyDirectoryThrows) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
+  fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec);
+  EXPECT_THROW(molsurf::write_file_atomically(dir_ / "x", "data"), molsurf::Error);
+  fs::permissions(dir_, fs::perms::owner_all);
+  EXPECT_EQ(entries(), 0u);
+}
+
+}  // namespace
