@@ -1,0 +1,99 @@
+#pragma once
+// A bounding-volume hierarchy over axis-aligned boxes (usually the faces of a mesh),
+// used to cull the pairs of faces that need an exact test: mesh checking now, the
+// Boolean engine's candidate pairs later.
+//
+// Boxes are closed and ties count as overlap, so culling is conservative: two faces that
+// share even one point always have overlapping boxes (boxes are built from the exact
+// input doubles, min/max of coordinates is exact). An empty box (min > max) overlaps
+// nothing.
+//
+// Layout: nodes in flat arrays (structure of arrays). An inner node's children are
+// adjacent (left, left + 1); a leaf holds up to kLeafSize items, stored contiguously
+// with their boxes copied in leaf order so a leaf scan touches one cache-friendly run.
+// Built top-down by median split of the box centres along the widest axis.
+// Queries are const and allocation-free, so they can run from an OpenMP parallel loop.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "molsurf/mesh.hpp"
+
+namespace molsurf::geometry {
+
+// Closed-box overlap; ties overlap.
+inline bool boxes_overlap(const BoundingBox& a, const BoundingBox& b) {
+  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
+         a.min.z <= b.max.z && b.min.z <= a.max.z;
+}
+
+// The closed box of one face, from its exact corner coordinates.
+BoundingBox face_box(const Mesh& mesh, std::size_t face);
+
+class BoxBvh {
+ public:
+  static constexpr std::uint32_t kLeafSize = 4;
+
+  BoxBvh() = default;
+  // Item ids are positions in `boxes`.
+  explicit BoxBvh(std::span<const BoundingBox> boxes);
+  // One box per face of the mesh; `include[f] == false` leaves face f out (e.g. a
+  // degenerate face). An empty `include` includes every face.
+  static BoxBvh for_faces(const Mesh& mesh, std::span<const std::uint8_t> include = {});
+
+  std::size_t item_count() const { return item_count_; }
+  std::size_t node_count() const { return node_count_; }
+
+  // Calls visit(item_id) for every item whose box overlaps `query` (any order).
+  template <class Visit>
+  void for_each_overlap(const BoundingBox& query, Visit&& visit) const;
+
+  // All pairs (i, j), i < j, of items whose boxes overlap, sorted. Parallel (OpenMP).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs() const;
+
+ private:
+  struct Bounds {  // structure of arrays: one entry per node or per leaf-ordered item
+    std::vector<double> min_x, min_y, min_z, max_x, max_y, max_z;
+    void resize(std::size_t n);
+    void set(std::size_t i, const BoundingBox& b);
+    bool overlaps(std::size_t i, const BoundingBox& q) const {
+      return min_x[i] <= q.max.x && q.min.x <= max_x[i] && min_y[i] <= q.max.y && q.min.y <= max_y[i] &&
+             min_z[i] <= q.max.z && q.min.z <= max_z[i];
+    }
+  };
+
+  void build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t> ids);
+
+  std::size_t item_count_ = 0, node_count_ = 0;
+  Bounds node_bounds_;
+  // Inner node: first_ = left child (right child = first_ + 1), count_ = 0.
+  // Leaf: items [first_, first_ + count_) of items_ / item_bounds_.
+  std::vector<std::uint32_t> first_, count_;
+  std::vector<std::uint32_t> items_;  // item ids in leaf order
+  Bounds item_bounds_;                 // their boxes in the same order
+};
+
+template <class Visit>
+void BoxBvh::for_each_overlap(const BoundingBox& query, Visit&& visit) const {
+  if (node_count_ == 0) return;
+  // Median splits keep the depth at most about log2(n / kLeafSize) + 1, far below 128.
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const std::uint32_t node = stack[--top];
+    if (!node_bounds_.overlaps(node, query)) continue;
+    const std::uint32_t first = first_[node], count = count_[node];
+    if (count == 0) {
+      stack[top++] = first;
+      stack[top++] = first + 1;
+      continue;
+    }
+    for (std::uint32_t k = first; k < first + count; ++k)
+      if (item_bounds_.overlaps(k, query)) visit(items_[k]);
+  }
+}
+
+}  // namespace molsurf::geometry

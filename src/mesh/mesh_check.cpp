@@ -1,0 +1,413 @@
+// check_mesh: topology by sorting (no per-edge allocation), geometry by exact predicates.
+//
+// Rules (what `molsurf check` reports):
+//  - Faces with a repeated vertex index are degenerate and take no part in the edge,
+//    fan, duplicate or intersection analysis (their edges would be meaningless).
+//    Faces with three exactly collinear corners are degenerate too; they do take part in
+//    the topology (their edges are real) but not in the intersection tests.
+//  - An edge is an unordered vertex pair; boundary = used by 1 face, non-manifold = used
+//    by more than 2, misoriented = used by exactly 2 that traverse it the same way.
+//  - A vertex is non-manifold when its faces form more than one fan through shared
+//    edges (the link graph around it has more than one connected component).
+//  - Duplicate faces: the same vertex set as an earlier face (either orientation).
+//  - Self-intersections: all face pairs whose closed boxes overlap, classified exactly by
+//    geometry::classify_triangle_pair (contacts are counted apart and are not defects).
+//  - Inward components: a component (faces connected through shared vertices) is inward
+//    when its signed volume is <= 0 and it is not nested in another component. Nested is
+//    SIMPLIFIED to "its bounding box lies inside the bounding box of another component
+//    with positive volume"; an exact point-in-solid test (ray parity) will replace it.
+//    The volume sign itself is a floating-point sum, not an exact predicate.
+//  - An empty mesh (no faces) is valid: there is nothing wrong with it.
+#include "molsurf/mesh_check.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "geometry/face_bvh.hpp"
+#include "geometry/predicates.hpp"
+#include "geometry/triangle_intersection.hpp"
+#include "molsurf/error.hpp"
+
+namespace molsurf {
+
+namespace {
+
+// The lowest `limit` distinct indices seen, whatever order they arrive in, so examples
+// do not depend on thread scheduling.
+class LowestIndices {
+ public:
+  explicit LowestIndices(std::size_t limit) : limit_(limit) {}
+
+  void add(std::size_t index) {
+    if (limit_ == 0 || std::find(kept_.begin(), kept_.end(), index) != kept_.end()) return;
+    if (kept_.size() < limit_) {
+      kept_.push_back(index);
+      return;
+    }
+    const auto largest = std::max_element(kept_.begin(), kept_.end());
+    if (index < *largest) *largest = index;
+  }
+  void merge(const LowestIndices& other) {
+    for (const std::size_t i : other.kept_) add(i);
+  }
+  std::vector<std::size_t> sorted() const {
+    std::vector<std::size_t> out = kept_;
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+ private:
+  std::size_t limit_;
+  std::vector<std::size_t> kept_;
+};
+
+bool has_repeated_index(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
+
+void require_valid_indices(const Mesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    for (const Index v : mesh.faces[f])
+      if (v >= n) {
+        throw Error("mesh face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " but the mesh has " +
+                    std::to_string(n) + " vertices");
+      }
+}
+
+// One face's traversal of an edge, bucketed under the edge's lower vertex.
+struct EdgeUse {
+  Index upper;           // the edge's higher vertex index
+  std::uint32_t face;    // face index
+  bool lower_to_upper;   // the face traverses the edge from the lower to the higher index
+};
+
+// Half-edges grouped by lower vertex (counting sort), sorted by upper vertex inside each
+// bucket: equal edges become adjacent without a global sort or a hash map.
+struct EdgeTable {
+  std::vector<std::uint32_t> bucket_start;  // size vertices + 1
+  std::vector<EdgeUse> uses;
+};
+
+EdgeTable build_edge_table(const Mesh& mesh, const std::vector<std::uint8_t>& topological) {
+  EdgeTable table;
+  const std::size_t nv = mesh.vertices.size();
+  table.bucket_start.assign(nv + 1, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!topological[f]) continue;
+    const Triangle& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k) ++table.bucket_start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  }
+  std::partial_sum(table.bucket_start.begin(), table.bucket_start.end(), table.bucket_start.begin());
+  table.uses.resize(table.bucket_start[nv]);
+  std::vector<std::uint32_t> fill(table.bucket_start.begin(), table.bucket_start.end() - 1);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!topological[f]) continue;
+    const Triangle& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      const Index u = t[k], v = t[(k + 1) % 3];
+      table.uses[fill[std::min(u, v)]++] = {std::max(u, v), static_cast<std::uint32_t>(f), u < v};
+    }
+  }
+  const auto nv_signed = static_cast<std::int64_t>(nv);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t v = 0; v < nv_signed; ++v) {
+    std::sort(table.uses.begin() + table.bucket_start[v], table.uses.begin() + table.bucket_start[v + 1],
+              [](const EdgeUse& a, const EdgeUse& b) { return a.upper < b.upper || (a.upper == b.upper && a.face < b.face); });
+  }
+  return table;
+}
+
+void check_edges(const EdgeTable& table, std::size_t max_examples, MeshCheck& result) {
+  LowestIndices boundary(max_examples), nonmanifold(max_examples), misoriented(max_examples);
+  const std::size_t nv = table.bucket_start.size() - 1;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::uint32_t end = table.bucket_start[v + 1];
+    for (std::uint32_t k = table.bucket_start[v]; k < end;) {
+      std::uint32_t group_end = k + 1;
+      while (group_end < end && table.uses[group_end].upper == table.uses[k].upper) ++group_end;
+      const std::uint32_t n = group_end - k;
+      ++result.edges;
+      if (n == 1) {
+        ++result.boundary_edges;
+        boundary.add(table.uses[k].face);
+      } else if (n > 2) {
+        ++result.nonmanifold_edges;
+        for (std::uint32_t i = k; i < group_end; ++i) nonmanifold.add(table.uses[i].face);
+      } else if (table.uses[k].lower_to_upper == table.uses[k + 1].lower_to_upper) {
+        ++result.misoriented_edges;
+        misoriented.add(table.uses[k].face);
+        misoriented.add(table.uses[k + 1].face);
+      }
+      k = group_end;
+    }
+  }
+  result.examples_boundary = boundary.sorted();
+  result.examples_nonmanifold_edge = nonmanifold.sorted();
+  result.examples_misoriented = misoriented.sorted();
+}
+
+// Marks used vertices and counts, per vertex, the fans its faces form: faces around v
+// are joined when they share an edge (v, w), i.e. the components of v's link graph whose
+// nodes are the other corners w and whose edges are the faces.
+void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topological, std::size_t max_examples,
+                    MeshCheck& result) {
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  std::vector<std::uint8_t> used(nv, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    for (const Index v : mesh.faces[f]) used[v] = 1;
+    if (!topological[f]) continue;
+    for (const Index v : mesh.faces[f]) ++start[v + 1];
+  }
+  result.unused_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::uint32_t> incident(start[nv]);
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!topological[f]) continue;
+    for (const Index v : mesh.faces[f]) incident[fill[v]++] = static_cast<std::uint32_t>(f);
+  }
+
+  std::size_t nonmanifold = 0;
+  LowestIndices examples(max_examples);
+  const auto nv_signed = static_cast<std::int64_t>(nv);
+#pragma omp parallel reduction(+ : nonmanifold)
+  {
+    LowestIndices local_examples(max_examples);
+    std::vector<Index> nodes;                    // distinct link vertices w
+    std::vector<std::uint32_t> parent;           // union-find over `nodes`
+    std::vector<std::array<Index, 2>> link_edges;
+    auto find = [&](std::uint32_t x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+#pragma omp for schedule(static)
+    for (std::int64_t v = 0; v < nv_signed; ++v) {
+      if (start[v + 1] - start[v] < 2) continue;  // zero or one face: a single fan
+      nodes.clear();
+      link_edges.clear();
+      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
+        const Triangle& t = mesh.faces[incident[k]];
+        const int corner = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+        const Index w0 = t[(corner + 1) % 3], w1 = t[(corner + 2) % 3];
+        link_edges.push_back({w0, w1});
+        nodes.push_back(w0);
+        nodes.push_back(w1);
+      }
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      parent.resize(nodes.size());
+      std::iota(parent.begin(), parent.end(), 0u);
+      auto node_of = [&](Index w) {
+        return static_cast<std::uint32_t>(std::lower_bound(nodes.begin(), nodes.end(), w) - nodes.begin());
+      };
+      std::size_t fans = nodes.size();
+      for (const auto& e : link_edges) {
+        const std::uint32_t a = find(node_of(e[0])), b = find(node_of(e[1]));
+        if (a != b) {
+          parent[a] = b;
+          --fans;
+        }
+      }
+      if (fans > 1) {
+        ++nonmanifold;
+        local_examples.add(static_cast<std::size_t>(v));
+      }
+    }
+#pragma omp critical(molsurf_check_vertices)
+    examples.merge(local_examples);
+  }
+  result.nonmanifold_vertices = nonmanifold;
+  result.examples_nonmanifold_vertex = examples.sorted();
+}
+
+std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8_t>& topological) {
+  std::vector<Triangle> keys;
+  keys.reserve(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!topological[f]) continue;
+    Triangle t = mesh.faces[f];
+    std::sort(t.begin(), t.end());
+    keys.push_back(t);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::size_t duplicates = 0;
+  for (std::size_t k = 1; k < keys.size(); ++k)
+    if (keys[k] == keys[k - 1]) ++duplicates;
+  return duplicates;
+}
+
+void check_self_intersections(const Mesh& mesh, const std::vector<std::uint8_t>& degenerate,
+                              std::size_t max_examples, MeshCheck& result) {
+  std::vector<std::uint8_t> testable(degenerate.size());
+  for (std::size_t f = 0; f < degenerate.size(); ++f) testable[f] = !degenerate[f];
+  const geometry::BoxBvh bvh = geometry::BoxBvh::for_faces(mesh, testable);
+
+  std::size_t intersecting = 0, contacts = 0;
+  LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
+  const auto nf = static_cast<std::int64_t>(mesh.faces.size());
+#pragma omp parallel reduction(+ : intersecting, contacts)
+  {
+    LowestIndices local_intersecting(max_examples), local_contact(max_examples);
+#pragma omp for schedule(dynamic, 4096)
+    for (std::int64_t i = 0; i < nf; ++i) {
+      if (!testable[i]) continue;
+      const auto face_i = static_cast<std::size_t>(i);
+      bvh.for_each_overlap(geometry::face_box(mesh, face_i), [&](std::uint32_t j) {
+        if (j <= face_i) return;  // each unordered pair once
+        switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
+          case geometry::TrianglePairRelation::intersecting:
+            ++intersecting;
+            local_intersecting.add(face_i);
+            local_intersecting.add(j);
+            break;
+          case geometry::TrianglePairRelation::contact:
+            ++contacts;
+            local_contact.add(face_i);
+            local_contact.add(j);
+            break;
+          case geometry::TrianglePairRelation::apart:
+          case geometry::TrianglePairRelation::duplicate:  // counted by count_duplicate_faces
+            break;
+        }
+      });
+    }
+#pragma omp critical(molsurf_check_intersections)
+    {
+      intersecting_examples.merge(local_intersecting);
+      contact_examples.merge(local_contact);
+    }
+  }
+  result.intersecting_pairs = intersecting;
+  result.contact_pairs = contacts;
+  result.examples_intersecting = intersecting_examples.sorted();
+  result.examples_contact = contact_examples.sorted();
+  result.self_intersections_checked = true;
+}
+
+// Six times the signed volume contributed by one face (origin-based divergence sum).
+double six_volume(const Mesh& mesh, const Triangle& t) {
+  return dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]]));
+}
+
+bool box_contains(const BoundingBox& outer, const BoundingBox& inner) {
+  return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
+         inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+}
+
+void check_components(const Mesh& mesh, MeshCheck& result) {
+  const Components components = connected_components(mesh);
+  result.components = components.count;
+  std::vector<double> volume(components.count, 0.0);
+  std::vector<BoundingBox> box(components.count);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::uint32_t c = components.face_component[f];
+    volume[c] += six_volume(mesh, mesh.faces[f]);
+    const BoundingBox fb = geometry::face_box(mesh, f);
+    BoundingBox& b = box[c];
+    b.min = {std::min(b.min.x, fb.min.x), std::min(b.min.y, fb.min.y), std::min(b.min.z, fb.min.z)};
+    b.max = {std::max(b.max.x, fb.max.x), std::max(b.max.y, fb.max.y), std::max(b.max.z, fb.max.z)};
+  }
+  for (std::size_t c = 0; c < components.count; ++c) {
+    if (volume[c] > 0) continue;
+    bool nested = false;
+    for (std::size_t other = 0; other < components.count && !nested; ++other)
+      nested = other != c && volume[other] > 0 && box_contains(box[other], box[c]);
+    if (!nested) ++result.inward_components;
+  }
+}
+
+std::string defect_line(std::size_t count, const char* singular, const char* plural, const char* what,
+                        const std::vector<std::size_t>& examples) {
+  std::ostringstream line;
+  line << count << ' ' << (count == 1 ? singular : plural);
+  if (!examples.empty()) {
+    line << ": " << what << ' ';
+    for (std::size_t k = 0; k < examples.size(); ++k) line << (k ? ", " : "") << examples[k];
+    // Counts are of edges or pairs, examples are faces: the ellipsis only hints at more.
+    if (examples.size() < count) line << ", …";
+  }
+  return line.str();
+}
+
+}  // namespace
+
+bool MeshCheck::valid() const {
+  if (faces == 0) return true;  // an empty mesh has no defect
+  return closed() && manifold() && oriented() && degenerate_faces == 0 && duplicate_faces == 0 &&
+         intersecting_pairs == 0 && inward_components == 0;
+}
+
+std::vector<std::string> MeshCheck::defects() const {
+  std::vector<std::string> lines;
+  if (faces == 0) return lines;
+  if (boundary_edges)
+    lines.push_back(defect_line(boundary_edges, "boundary edge (a hole)", "boundary edges (holes)", "faces",
+                                examples_boundary));
+  if (nonmanifold_edges)
+    lines.push_back(defect_line(nonmanifold_edges, "non-manifold edge (more than two faces)",
+                                "non-manifold edges (more than two faces)", "faces", examples_nonmanifold_edge));
+  if (misoriented_edges)
+    lines.push_back(defect_line(misoriented_edges, "misoriented edge (its two faces traverse it the same way)",
+                                "misoriented edges (their two faces traverse them the same way)", "faces",
+                                examples_misoriented));
+  if (nonmanifold_vertices)
+    lines.push_back(defect_line(nonmanifold_vertices, "non-manifold vertex (more than one fan of faces)",
+                                "non-manifold vertices (more than one fan of faces)", "vertices",
+                                examples_nonmanifold_vertex));
+  if (degenerate_faces)
+    lines.push_back(defect_line(degenerate_faces, "degenerate face (repeated or collinear corners)",
+                                "degenerate faces (repeated or collinear corners)", "faces", examples_degenerate));
+  if (duplicate_faces)
+    lines.push_back(defect_line(duplicate_faces, "duplicate face (same three vertices as another)",
+                                "duplicate faces (same three vertices as another)", "faces", {}));
+  if (intersecting_pairs)
+    lines.push_back(defect_line(intersecting_pairs, "intersecting face pair (crossing or overlapping)",
+                                "intersecting face pairs (crossing or overlapping)", "faces", examples_intersecting));
+  if (inward_components)
+    lines.push_back(defect_line(inward_components, "inward component (outer shell with negative volume)",
+                                "inward components (outer shells with negative volume)", "", {}));
+  return lines;
+}
+
+MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
+  require_valid_indices(mesh);
+  MeshCheck result;
+  result.vertices = mesh.vertices.size();
+  result.faces = mesh.faces.size();
+  const std::size_t nf = mesh.faces.size();
+
+  // topological[f]: the face has three distinct indices; degenerate[f]: exact collinearity too.
+  std::vector<std::uint8_t> topological(nf), degenerate(nf);
+  const auto nf_signed = static_cast<std::int64_t>(nf);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t f = 0; f < nf_signed; ++f) {
+    topological[f] = !has_repeated_index(mesh.faces[f]);
+    degenerate[f] = geometry::is_degenerate_face(mesh, static_cast<std::size_t>(f));
+  }
+  LowestIndices degenerate_examples(options.max_examples);
+  for (std::size_t f = 0; f < nf; ++f)
+    if (degenerate[f]) {
+      ++result.degenerate_faces;
+      degenerate_examples.add(f);
+    }
+  result.examples_degenerate = degenerate_examples.sorted();
+
+  check_edges(build_edge_table(mesh, topological), options.max_examples, result);
+  check_vertices(mesh, topological, options.max_examples, result);
+  result.duplicate_faces = count_duplicate_faces(mesh, topological);
+  if (options.self_intersections) check_self_intersections(mesh, degenerate, options.max_examples, result);
+  check_components(mesh, result);
+
+  result.euler_characteristic = euler_characteristic(mesh);
+  result.area = surface_area(mesh);
+  result.volume = signed_volume(mesh);
+  result.quality = mesh_quality(mesh);
+  return result;
+}
+
+}  // namespace molsurf

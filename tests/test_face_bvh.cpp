@@ -1,0 +1,81 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "geometry/face_bvh.hpp"
+
+using molsurf::BoundingBox;
+using molsurf::Vec3;
+using molsurf::geometry::boxes_overlap;
+using molsurf::geometry::BoxBvh;
+
+namespace {
+
+// Boxes on a coarse grid so that exact ties (touching faces, edges, corners) are common.
+std::vector<BoundingBox> random_boxes(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> corner(0, 40), size(0, 4);
+  std::vector<BoundingBox> boxes(n);
+  for (auto& b : boxes) {
+    b.min = {double(corner(rng)), double(corner(rng)), double(corner(rng))};
+    b.max = b.min + Vec3{double(size(rng)), double(size(rng)), double(size(rng))};
+  }
+  return boxes;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const std::vector<BoundingBox>& boxes) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes_overlap(boxes[i], boxes[j])) pairs.emplace_back(i, j);
+  return pairs;
+}
+
+}  // namespace
+
+TEST(BoxBvh, TiesOverlap) {
+  BoundingBox a{{0, 0, 0}, {1, 1, 1}}, corner_touch{{1, 1, 1}, {2, 2, 2}}, apart{{1.5, 0, 0}, {2, 1, 1}};
+  EXPECT_TRUE(boxes_overlap(a, corner_touch));
+  EXPECT_FALSE(boxes_overlap(a, apart));
+  EXPECT_FALSE(boxes_overlap(a, BoundingBox{}));  // empty overlaps nothing
+}
+
+TEST(BoxBvh, PairsEqualBruteForce) {
+  for (const std::size_t n : {0u, 1u, 3u, 4u, 5u, 17u, 500u, 3000u}) {
+    const auto boxes = random_boxes(n, static_cast<unsigned>(n) + 1);
+    const BoxBvh bvh(boxes);
+    EXPECT_EQ(bvh.item_count(), n);
+    const auto expected = brute_force_pairs(boxes);
+    EXPECT_EQ(bvh.overlapping_pairs(), expected) << n << " boxes";
+    if (n >= 500) EXPECT_GT(expected.size(), n / 10) << "the test should have many overlaps";
+  }
+}
+
+TEST(BoxBvh, QueryEqualsBruteForce) {
+  const auto boxes = random_boxes(2000, 99);
+  const BoxBvh bvh(boxes);
+  const auto queries = random_boxes(200, 7);
+  for (const BoundingBox& q : queries) {
+    std::vector<std::uint32_t> found, expected;
+    bvh.for_each_overlap(q, [&](std::uint32_t id) { found.push_back(id); });
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+      if (boxes_overlap(q, boxes[i])) expected.push_back(i);
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected);
+  }
+}
+
+TEST(BoxBvh, FacesOfAMeshWithExclusions) {
+  molsurf::Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {5, 5, 5}, {6, 5, 5}, {5, 6, 5}};
+  mesh.faces = {{0, 1, 2}, {1, 3, 2}, {4, 5, 6}, {0, 3, 1}};
+  const std::vector<std::uint8_t> include{1, 1, 1, 0};
+  const BoxBvh bvh = BoxBvh::for_faces(mesh, include);
+  EXPECT_EQ(bvh.item_count(), 3u);
+  using Pair = std::pair<std::uint32_t, std::uint32_t>;
+  EXPECT_EQ(bvh.overlapping_pairs(), (std::vector<Pair>{{0, 1}}));
+  EXPECT_EQ(BoxBvh::for_faces(mesh).overlapping_pairs(), (std::vector<Pair>{{0, 1}, {0, 3}, {1, 3}}));
+}

@@ -1,0 +1,309 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "molsurf/error.hpp"
+#include "molsurf/icosphere.hpp"
+#include "molsurf/mesh_check.hpp"
+
+using molsurf::check_mesh;
+using molsurf::Mesh;
+using molsurf::MeshCheck;
+using molsurf::Vec3;
+
+namespace {
+
+// Outward tetrahedron on the corner `o`, edge length `s`.
+Mesh tetrahedron(const Vec3& o = {0, 0, 0}, double s = 1) {
+  Mesh m;
+  m.vertices = {o, o + Vec3{s, 0, 0}, o + Vec3{0, s, 0}, o + Vec3{0, 0, s}};
+  m.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return m;
+}
+
+// Outward axis-aligned cube [lo, lo + s]^3: vertex index = x + 2y + 4z, two triangles per side.
+Mesh cube(const Vec3& lo = {0, 0, 0}, double s = 1) {
+  Mesh m;
+  for (int k = 0; k < 8; ++k) m.vertices.push_back(lo + s * Vec3{double(k & 1), double((k >> 1) & 1), double(k >> 2)});
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    m.faces.push_back({molsurf::Index(q[0]), molsurf::Index(q[1]), molsurf::Index(q[2])});
+    m.faces.push_back({molsurf::Index(q[0]), molsurf::Index(q[2]), molsurf::Index(q[3])});
+  }
+  return m;
+}
+
+Mesh flipped(Mesh m) {
+  for (auto& f : m.faces) std::swap(f[1], f[2]);
+  return m;
+}
+
+Mesh joined(const Mesh& a, const Mesh& b) {
+  Mesh m = a;
+  const auto offset = static_cast<molsurf::Index>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (auto f : b.faces) m.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+  return m;
+}
+
+bool mentions(const MeshCheck& c, const std::string& word) {
+  const auto lines = c.defects();
+  return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(word) != std::string::npos; });
+}
+
+// The invariant every result must keep: valid exactly when no defect line is printed.
+void expect_consistent(const MeshCheck& c) { EXPECT_EQ(c.valid(), c.defects().empty()); }
+
+}  // namespace
+
+TEST(MeshCheck, ValidClosedMeshes) {
+  for (const Mesh& m : {tetrahedron(), cube(), cube({-3, 2, 7.5}, 0.1)}) {
+    const MeshCheck c = check_mesh(m);
+    EXPECT_TRUE(c.valid());
+    EXPECT_TRUE(c.closed() && c.manifold() && c.oriented());
+    EXPECT_EQ(c.edges, m.faces.size() * 3 / 2);
+    EXPECT_EQ(c.euler_characteristic, 2);
+    EXPECT_EQ(c.components, 1u);
+    EXPECT_EQ(c.intersecting_pairs + c.contact_pairs + c.degenerate_faces + c.duplicate_faces, 0u);
+    EXPECT_TRUE(c.self_intersections_checked);
+    EXPECT_GT(c.volume, 0);
+    expect_consistent(c);
+  }
+  EXPECT_NEAR(check_mesh(cube()).volume, 1.0, 1e-12);
+}
+
+TEST(MeshCheck, EmptyMeshIsValid) {
+  const MeshCheck c = check_mesh(Mesh{});
+  EXPECT_TRUE(c.valid());
+  EXPECT_TRUE(c.defects().empty());
+}
+
+TEST(MeshCheck, HoleIsBoundary) {
+  Mesh m = cube();
+  m.faces.erase(m.faces.begin() + 5);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.boundary_edges, 3u);
+  EXPECT_FALSE(c.closed());
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "boundary edges"));
+  EXPECT_TRUE(std::is_sorted(c.examples_boundary.begin(), c.examples_boundary.end()));
+  EXPECT_FALSE(c.examples_boundary.empty());
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, FlippedFaceIsMisoriented) {
+  Mesh m = cube();
+  std::swap(m.faces[3][1], m.faces[3][2]);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.misoriented_edges, 3u);
+  EXPECT_TRUE(c.closed());
+  EXPECT_FALSE(c.oriented());
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(std::find(c.examples_misoriented.begin(), c.examples_misoriented.end(), 3u) != c.examples_misoriented.end());
+  EXPECT_TRUE(mentions(c, "misoriented"));
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, ThreeFacesOnAnEdgeIsNonManifold) {
+  Mesh m = tetrahedron();
+  m.vertices.push_back({0.5, -1, -1});
+  m.faces.push_back({0, 1, 4});  // a fin on edge (0,1)
+  const MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.nonmanifold_edges, 1u);
+  EXPECT_EQ(c.boundary_edges, 2u);
+  EXPECT_FALSE(c.manifold());
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "non-manifold edge"));
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, TwoTetrahedraSharingOneVertexIndex) {
+  Mesh m = tetrahedron();
+  // A second tetrahedron hanging from vertex 3 = (0,0,1), mirrored above it.
+  m.vertices.push_back({1, 0, 2});
+  m.vertices.push_back({0, 1, 2});
+  m.vertices.push_back({0, 0, 2});
+  // Corners 3,4,5,6, outward.
+  m.faces.push_back({3, 5, 4});
+  m.faces.push_back({3, 4, 6});
+  m.faces.push_back({3, 6, 5});
+  m.faces.push_back({4, 5, 6});
+  const MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.nonmanifold_vertices, 1u);
+  EXPECT_EQ(c.examples_nonmanifold_vertex, std::vector<std::size_t>{3});
+  EXPECT_TRUE(c.closed());
+  EXPECT_TRUE(c.oriented());
+  EXPECT_EQ(c.intersecting_pairs, 0u);
+  EXPECT_GT(c.volume, 0);
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "non-manifold vertices") || mentions(c, "non-manifold vertex"));
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, InterpenetratingCubesIntersect) {
+  const MeshCheck c = check_mesh(joined(cube(), cube({0.5, 0.25, 0.3})));
+  EXPECT_GT(c.intersecting_pairs, 0u);
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_TRUE(c.closed() && c.manifold() && c.oriented());
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "intersecting"));
+  EXPECT_TRUE(std::is_sorted(c.examples_intersecting.begin(), c.examples_intersecting.end()));
+  // Deterministic across runs (parallel loop).
+  const MeshCheck again = check_mesh(joined(cube(), cube({0.5, 0.25, 0.3})));
+  EXPECT_EQ(again.intersecting_pairs, c.intersecting_pairs);
+  EXPECT_EQ(again.examples_intersecting, c.examples_intersecting);
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, InterpenetratingTetrahedraIntersect) {
+  const MeshCheck c = check_mesh(joined(tetrahedron(), tetrahedron({0.2, 0.2, 0.2})));
+  EXPECT_GT(c.intersecting_pairs, 0u);
+  EXPECT_FALSE(c.valid());
+}
+
+TEST(MeshCheck, TetrahedraTouchingAtADuplicatedPointAreContacts) {
+  // The second tetrahedron's corner (0,0,0) coincides with the first's, at another index.
+  Mesh second = tetrahedron();
+  for (auto& v : second.vertices) v = -1.0 * v;
+  second = flipped(second);  // mirroring through the origin turned it inside out
+  const MeshCheck c = check_mesh(joined(tetrahedron(), second));
+  EXPECT_GT(c.contact_pairs, 0u);
+  EXPECT_EQ(c.intersecting_pairs, 0u);
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_EQ(c.inward_components, 0u);
+  EXPECT_TRUE(c.valid());
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, CubesTouchingFaceToFaceAreContacts) {
+  const MeshCheck c = check_mesh(joined(cube(), cube({1, 0, 0})));
+  EXPECT_GT(c.contact_pairs, 0u);
+  EXPECT_EQ(c.intersecting_pairs, 0u);
+  EXPECT_TRUE(c.valid());
+  // Offset by half a side along y: partial face overlap, still only touching.
+  const MeshCheck shifted = check_mesh(joined(cube(), cube({1, 0.5, 0.25})));
+  EXPECT_GT(shifted.contact_pairs, 0u);
+  EXPECT_EQ(shifted.intersecting_pairs, 0u);
+  EXPECT_TRUE(shifted.valid());
+}
+
+TEST(MeshCheck, CoincidentCopyIntersects) {
+  // The same cube twice with separate vertices: every face overlaps its copy, same facing.
+  const MeshCheck c = check_mesh(joined(cube(), cube()));
+  EXPECT_GE(c.intersecting_pairs, 12u);
+  EXPECT_FALSE(c.valid());
+}
+
+TEST(MeshCheck, InsideOutIsInward) {
+  const MeshCheck c = check_mesh(flipped(cube()));
+  EXPECT_EQ(c.inward_components, 1u);
+  EXPECT_TRUE(c.closed() && c.manifold() && c.oriented());
+  EXPECT_LT(c.volume, 0);
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "inward"));
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, CavityIsValid) {
+  const MeshCheck c = check_mesh(joined(cube({-2, -2, -2}, 5), flipped(cube())));
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_EQ(c.inward_components, 0u);
+  EXPECT_NEAR(c.volume, 124.0, 1e-9);
+  EXPECT_TRUE(c.valid());
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, DegenerateFaces) {
+  Mesh m = cube();
+  m.faces.push_back({0, 0, 1});  // repeated index: left out of the topology
+  MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.degenerate_faces, 1u);
+  EXPECT_EQ(c.examples_degenerate, std::vector<std::size_t>{12});
+  EXPECT_TRUE(c.closed());
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "degenerate"));
+  expect_consistent(c);
+
+  // Collinear corners: a tetrahedron squashed so that one face is a line segment.
+  Mesh flat = tetrahedron();
+  flat.vertices[3] = {0.5, 0.5, 0};
+  c = check_mesh(flat);
+  EXPECT_GE(c.degenerate_faces, 1u);
+  EXPECT_FALSE(c.valid());
+}
+
+TEST(MeshCheck, DuplicateFace) {
+  Mesh m = tetrahedron();
+  m.faces.push_back(m.faces[2]);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.duplicate_faces, 1u);
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "duplicate"));
+}
+
+TEST(MeshCheck, UnusedVerticesAndBadIndices) {
+  Mesh m = tetrahedron();
+  m.vertices.push_back({9, 9, 9});
+  const MeshCheck c = check_mesh(m);
+  EXPECT_EQ(c.unused_vertices, 1u);
+  EXPECT_TRUE(c.valid());
+  m.faces.push_back({0, 1, 99});
+  EXPECT_THROW(check_mesh(m), molsurf::Error);
+}
+
+TEST(MeshCheck, SelfIntersectionsCanBeSkipped) {
+  molsurf::MeshCheckOptions options;
+  options.self_intersections = false;
+  const MeshCheck c = check_mesh(joined(cube(), cube({0.5, 0.25, 0.3})), options);
+  EXPECT_FALSE(c.self_intersections_checked);
+  EXPECT_EQ(c.intersecting_pairs, 0u);
+}
+
+TEST(MeshCheck, IcospheresAreValid) {
+  for (int n = 1; n <= 8; ++n) {
+    molsurf::IcosphereOptions options;
+    options.frequency = n;
+    const Mesh m = molsurf::make_icosphere({1.5, -2, 0.25}, 1.7, options);
+    const MeshCheck c = check_mesh(m);
+    EXPECT_TRUE(c.valid()) << "frequency " << n << ": " << (c.defects().empty() ? "" : c.defects()[0]);
+    EXPECT_EQ(c.faces, std::size_t(20 * n * n));
+    EXPECT_EQ(c.euler_characteristic, 2);
+    EXPECT_EQ(c.contact_pairs, 0u);
+  }
+}
+
+// Many overlapping icospheres: crossings must be found; separated ones must be clean.
+TEST(MeshCheck, ManyIcospheres) {
+  molsurf::IcosphereOptions options;
+  options.frequency = 6;
+  Mesh apart, overlapping;
+  for (int i = 0; i < 60; ++i) {
+    apart.append(molsurf::make_icosphere({3.0 * (i % 8), 3.0 * (i / 8), 0}, 1.0, options));
+    overlapping.append(molsurf::make_icosphere({1.5 * (i % 8), 1.5 * (i / 8), 0}, 1.0, options));
+  }
+  const MeshCheck a = check_mesh(apart);
+  EXPECT_TRUE(a.valid());
+  EXPECT_EQ(a.components, 60u);
+  const MeshCheck o = check_mesh(overlapping);
+  EXPECT_GT(o.intersecting_pairs, 0u);
+  EXPECT_FALSE(o.valid());
+}
+
+// Timing of a ~2-million-face mesh; run with --gtest_also_run_disabled_tests.
+TEST(MeshCheck, DISABLED_TwoMillionFacesTiming) {
+  molsurf::IcosphereOptions options;
+  options.frequency = 50;  // 50,000 faces per sphere
+  Mesh m;
+  for (int i = 0; i < 40; ++i)
+    m.append(molsurf::make_icosphere({2.5 * (i % 7), 2.5 * (i / 7), 0.3 * i}, 1.0, options));
+  const auto start = std::chrono::steady_clock::now();
+  const MeshCheck c = check_mesh(m);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("check_mesh: %zu faces in %.2f s\n", c.faces, seconds);
+  EXPECT_EQ(c.faces, 2000000u);
+  EXPECT_TRUE(c.valid());
+}
