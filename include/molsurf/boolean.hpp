@@ -1,0 +1,48 @@
+#pragma once
+// The union engine: exact, robust Boolean operations on closed triangulated surfaces
+// (Shostko, Löhner & Sandberg 1999, §2.2-2.4), for any meshes, not only spheres.
+//
+// Operands must be closed, consistently oriented (outward), 2-manifold and free of
+// self-intersections (`check_mesh(m).valid()`); the result meets the same contract, so it
+// can be fed back in. Every decision is exact (see docs/boolean.md for the rules on
+// coplanar faces, touching solids and coincident vertices).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "molsurf/mesh.hpp"
+
+namespace molsurf {
+
+enum class BooleanOp { union_, intersection, difference };
+
+struct BooleanTimings {  // seconds per step of the paper
+  double cull = 0, intersect = 0, split = 0, classify = 0, stitch = 0;
+  double total() const { return cull + intersect + split + classify + stitch; }
+};
+
+struct BooleanStats {
+  std::size_t faces_a = 0, faces_b = 0;
+  std::size_t candidate_pairs = 0;     // face pairs whose boxes overlap
+  std::size_t intersecting_pairs = 0;  // pairs that share at least one point
+  std::size_t coplanar_pairs = 0;
+  std::size_t intersection_points = 0;
+  std::size_t split_faces = 0;         // faces re-triangulated
+  std::size_t exact_ray_casts = 0;     // patches classified by an exact ray
+  std::size_t split_vertices = 0;      // vertices duplicated where solids only touch
+  std::size_t output_faces = 0;
+  BooleanTimings seconds;
+};
+
+struct BooleanResult {
+  Mesh mesh;                               // tags: the source face's tag
+  std::vector<std::uint8_t> face_operand;  // 0: from a, 1: from b
+  std::vector<std::uint32_t> face_source;  // index of the source face in its operand
+  BooleanStats stats;
+};
+
+BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op);
+
+const char* boolean_op_name(BooleanOp op);
+
+}  // namespace molsurf

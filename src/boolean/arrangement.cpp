@@ -1,0 +1,101 @@
+#include "boolean/arrangement.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+namespace molsurf::boolean_engine {
+
+namespace {
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+void sort_unique(std::vector<std::uint32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace
+
+bool Arrangement::face_is_cut(const Operands& ops, std::uint32_t f) const {
+  if (!face_points[f].empty() || !face_segments[f].empty()) return true;
+  for (std::uint32_t e : ops.face_edges(f))
+    if (!edge_points[e].empty()) return true;
+  return false;
+}
+
+Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersection> pairs) {
+  Arrangement arr;
+  const std::uint32_t vertex_count = ops.vertex_count();
+
+  // Coincident vertices of a and b become one point: the lowest index (a's) stands for all.
+  std::vector<std::uint32_t> parent(vertex_count);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (const PairIntersection& pair : pairs)
+    for (auto [va, vb] : pair.coincident_vertices) {
+      const std::uint32_t ra = find_root(parent, va), rb = find_root(parent, vb);
+      if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+    }
+  arr.vertex_point.resize(vertex_count);
+  arr.points.reserve(vertex_count);
+  for (std::uint32_t v = 0; v < vertex_count; ++v) {
+    arr.vertex_point[v] = find_root(parent, v);
+    arr.points.push_back(geometry::ImplicitPoint::explicit_point(ops.vertex(v)));
+  }
+
+  std::unordered_map<PointKey, std::uint32_t, PointKeyHash> id_of_key;
+  auto point_id = [&](const PointKey& key) -> std::uint32_t {
+    if (key.kind == PointKind::vertex) return arr.vertex_point[key.i];
+    auto [it, inserted] = id_of_key.try_emplace(key, static_cast<std::uint32_t>(arr.points.size()));
+    if (inserted) arr.points.push_back(make_point(ops, key));
+    return it->second;
+  };
+
+  arr.edge_points.resize(ops.edge_count());
+  arr.face_points.resize(ops.face_count());
+  arr.face_segments.resize(ops.face_count());
+  arr.coplanar_partners.resize(ops.face_count());
+  std::vector<std::uint32_t> on_both;
+  auto place = [&](std::uint32_t face, const Location& loc, std::uint32_t id) {
+    if (loc.where == Where::edge)
+      arr.edge_points[ops.face_edges(face)[loc.index]].push_back(id);
+    else if (loc.where == Where::interior)
+      arr.face_points[face].push_back(id);
+  };
+  for (const PairIntersection& pair : pairs) {
+    if (pair.empty()) continue;
+    for (const PairPoint& p : pair.points) {
+      const std::uint32_t id = point_id(p.key);
+      on_both.push_back(id);
+      place(pair.face_a, p.on_a, id);
+      place(pair.face_b, p.on_b, id);
+    }
+    auto add_segments = [&](std::uint32_t face, const auto& segments) {
+      for (const auto& [k1, k2] : segments) {
+        const std::uint32_t i = point_id(k1), j = point_id(k2);
+        if (i != j) arr.face_segments[face].emplace_back(std::min(i, j), std::max(i, j));
+      }
+    };
+    add_segments(pair.face_a, pair.segments_a);
+    add_segments(pair.face_b, pair.segments_b);
+    if (pair.coplanar) {
+      arr.coplanar_partners[pair.face_a].push_back({pair.face_b, pair.same_orientation});
+      arr.coplanar_partners[pair.face_b].push_back({pair.face_a, pair.same_orientation});
+    }
+  }
+  arr.intersection_point_count = id_of_key.size();
+  arr.on_both_surfaces.assign(arr.points.size(), 0);
+  for (std::uint32_t id : on_both) arr.on_both_surfaces[id] = 1;
+  for (auto& list : arr.edge_points) sort_unique(list);
+  for (auto& list : arr.face_points) sort_unique(list);
+  for (auto& list : arr.face_segments) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return arr;
+}
+
+}  // namespace molsurf::boolean_engine

@@ -1,0 +1,36 @@
+#pragma once
+// The intersection points and constraint segments of all intersecting face pairs,
+// gathered per edge and per face: the input of the split step. Point ids below the
+// combined vertex count are the input vertices (coincident vertices of a and b share the
+// id of a's vertex); intersection points follow in a deterministic order.
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "boolean/intersect.hpp"
+#include "geometry/implicit_point.hpp"
+
+namespace molsurf::boolean_engine {
+
+struct Arrangement {
+  std::vector<geometry::ImplicitPoint> points;
+  std::vector<std::uint32_t> vertex_point;      // combined vertex -> point id
+  std::vector<std::uint8_t> on_both_surfaces;   // per point: found on a face of each operand
+  std::vector<std::vector<std::uint32_t>> edge_points;  // per combined edge: points strictly inside it
+  std::vector<std::vector<std::uint32_t>> face_points;  // per combined face: points strictly inside it
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> face_segments;  // constraints
+  struct Partner {
+    std::uint32_t face;
+    bool same_orientation;
+  };
+  std::vector<std::vector<Partner>> coplanar_partners;  // per face: coplanar faces of the other operand
+  std::size_t intersection_point_count = 0;
+
+  // A face needs re-triangulation when any point or segment lies on it or its edges.
+  bool face_is_cut(const Operands& ops, std::uint32_t f) const;
+};
+
+Arrangement build_arrangement(const Operands& operands, std::span<const PairIntersection> pairs);
+
+}  // namespace molsurf::boolean_engine

@@ -1,0 +1,35 @@
+#pragma once
+// Step 4, classify (paper §2.4): every piece of a face (sub-face) is outside the other
+// solid, inside it, or coincident with one of its faces (coplanar overlap), with the same
+// or the opposite orientation. Pieces are grouped into patches bounded by the
+// intersection curves; a patch takes one exact ray-parity verdict, from an input vertex of
+// the patch that is not on the other surface when there is one (fast path), otherwise
+// from the exact centroid of one of its pieces.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "boolean/arrangement.hpp"
+#include "boolean/operands.hpp"
+
+namespace molsurf::boolean_engine {
+
+enum class Side : std::uint8_t { outside, inside, coincident_same, coincident_opposite };
+
+struct SubFace {
+  std::array<std::uint32_t, 3> points;  // point ids, oriented as the source face
+  std::uint32_t face;                   // combined source face
+};
+
+
+struct Classification {
+  std::vector<Side> side;  // per sub-face
+  std::size_t exact_ray_casts = 0;
+};
+
+// `intersection_edges`: point-id pairs (lower, higher) lying on intersection curves.
+Classification classify_sub_faces(const Operands& operands, const Arrangement& arrangement,
+                                  const std::vector<SubFace>& sub_faces,
+                                  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& intersection_edges);
+
+}  // namespace molsurf::boolean_engine

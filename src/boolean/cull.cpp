@@ -1,0 +1,43 @@
+#include "boolean/cull.hpp"
+
+#include <algorithm>
+
+#include "geometry/face_bvh.hpp"
+
+namespace molsurf::boolean_engine {
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> cull_face_pairs(const Operands& operands) {
+  const Mesh& a = operands.mesh(0);
+  const Mesh& b = operands.mesh(1);
+  BoundingBox overlap;
+  {
+    const BoundingBox box_a = bounding_box(a), box_b = bounding_box(b);
+    if (box_a.empty() || box_b.empty() || !box_a.overlaps(box_b)) return {};
+    overlap.min = {std::max(box_a.min.x, box_b.min.x), std::max(box_a.min.y, box_b.min.y),
+                   std::max(box_a.min.z, box_b.min.z)};
+    overlap.max = {std::min(box_a.max.x, box_b.max.x), std::min(box_a.max.y, box_b.max.y),
+                   std::min(box_a.max.z, box_b.max.z)};
+  }
+  std::vector<std::uint8_t> b_near(b.faces.size());
+  for (std::size_t f = 0; f < b.faces.size(); ++f) b_near[f] = geometry::face_box(b, f).overlaps(overlap);
+  const geometry::BoxBvh tree = geometry::BoxBvh::for_faces(b, b_near);
+
+  const auto face_count_a = static_cast<std::int64_t>(a.faces.size());
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> per_face(a.faces.size());
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t f = 0; f < face_count_a; ++f) {
+    const BoundingBox box = geometry::face_box(a, static_cast<std::size_t>(f));
+    if (!box.overlaps(overlap)) continue;
+    tree.for_each_overlap(box, [&](std::uint32_t g) {
+      per_face[f].emplace_back(static_cast<std::uint32_t>(f), g + operands.face_offset_b());
+    });
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (auto& list : per_face) {
+    std::sort(list.begin(), list.end());
+    pairs.insert(pairs.end(), list.begin(), list.end());
+  }
+  return pairs;
+}
+
+}  // namespace molsurf::boolean_engine

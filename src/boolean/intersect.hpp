@@ -1,0 +1,53 @@
+#pragma once
+// Step 2, intersect (paper §2.2.2): what two faces (one of each operand) have in common,
+// decided with exact signed volumes (orient3d) on the input doubles and, for points in a
+// face's plane, exact orient2d in a coordinate projection. Degenerate contacts (a vertex
+// on a face, an edge through an edge, coplanar overlaps, coincident vertices) are found
+// as what they are and keyed by the elements they lie on.
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "boolean/operands.hpp"
+#include "boolean/point_key.hpp"
+
+namespace molsurf::boolean_engine {
+
+// Where a point lies on one face: at corner `index`, inside edge `index` (from corner
+// index to index + 1), or in the interior.
+enum class Where : std::uint8_t { corner, edge, interior };
+struct Location {
+  Where where = Where::interior;
+  std::uint8_t index = 0;
+};
+
+struct PairPoint {
+  PointKey key;
+  Location on_a, on_b;
+};
+
+struct PairIntersection {
+  std::uint32_t face_a = 0, face_b = 0;  // combined indices
+  bool coplanar = false;
+  bool same_orientation = false;  // coplanar only: the faces' normals agree
+  std::vector<PairPoint> points;  // distinct keys
+  // Constraint segments in each face (keys of their end points); they may lie on the
+  // face's own boundary. For a non-coplanar pair both lists hold the one segment.
+  std::vector<std::pair<PointKey, PointKey>> segments_a, segments_b;
+  // Vertex pairs (a's, b's) found at the same position.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> coincident_vertices;
+
+  bool empty() const { return points.empty(); }
+};
+
+// Projection of a face onto the coordinate plane (u, v) that drops an axis along which
+// its normal is exactly nonzero, oriented so the face is counter-clockwise there.
+struct Projection {
+  int u = 0, v = 1;
+};
+Projection face_projection(const Vec3& a, const Vec3& b, const Vec3& c);
+
+PairIntersection intersect_faces(const Operands& operands, std::uint32_t face_a, std::uint32_t face_b);
+
+}  // namespace molsurf::boolean_engine

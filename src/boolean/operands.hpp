@@ -1,0 +1,46 @@
+#pragma once
+// The two operands seen as one combined mesh: vertices of a then b, faces of a then b,
+// and the edge table (each undirected edge once, with its two faces). Indices into this
+// combined numbering are what intersection points are keyed by.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "molsurf/mesh.hpp"
+
+namespace molsurf::boolean_engine {
+
+class Operands {
+ public:
+  Operands(const Mesh& a, const Mesh& b);
+
+  const Mesh& mesh(int operand) const { return operand == 0 ? a_ : b_; }
+  std::uint32_t vertex_count() const { return vertex_offset_b_ + static_cast<std::uint32_t>(b_.vertices.size()); }
+  std::uint32_t face_count() const { return face_offset_b_ + static_cast<std::uint32_t>(b_.faces.size()); }
+  std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_vertices_.size()); }
+  std::uint32_t face_offset_b() const { return face_offset_b_; }
+  std::uint32_t vertex_offset_b() const { return vertex_offset_b_; }
+
+  int operand_of_face(std::uint32_t f) const { return f < face_offset_b_ ? 0 : 1; }
+  int operand_of_vertex(std::uint32_t v) const { return v < vertex_offset_b_ ? 0 : 1; }
+  std::uint32_t local_face(std::uint32_t f) const { return f < face_offset_b_ ? f : f - face_offset_b_; }
+
+  const Vec3& vertex(std::uint32_t v) const {
+    return v < vertex_offset_b_ ? a_.vertices[v] : b_.vertices[v - vertex_offset_b_];
+  }
+  // Combined vertex indices of a combined face, in the face's order.
+  const std::array<std::uint32_t, 3>& face(std::uint32_t f) const { return faces_[f]; }
+  // face_edges(f)[i] is the edge from corner i to corner i + 1.
+  const std::array<std::uint32_t, 3>& face_edges(std::uint32_t f) const { return face_edges_[f]; }
+  const std::array<std::uint32_t, 2>& edge_vertices(std::uint32_t e) const { return edge_vertices_[e]; }
+  const std::array<std::uint32_t, 2>& edge_faces(std::uint32_t e) const { return edge_faces_[e]; }
+
+ private:
+  const Mesh& a_;
+  const Mesh& b_;
+  std::uint32_t vertex_offset_b_, face_offset_b_;
+  std::vector<std::array<std::uint32_t, 3>> faces_, face_edges_;
+  std::vector<std::array<std::uint32_t, 2>> edge_vertices_, edge_faces_;  // vertices sorted
+};
+
+}  // namespace molsurf::boolean_engine

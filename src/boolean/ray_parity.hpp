@@ -1,0 +1,27 @@
+#pragma once
+// Exact point-in-solid by ray parity. The ray leaves the point along +x, perturbed
+// symbolically to (1, e, e^2) with e infinitely small (Simulation of Simplicity), so it
+// never meets an edge or a vertex: faces sharing an edge decide the tie the same way and
+// the crossing count is exact. The point must not lie on the solid's surface.
+#include <cstddef>
+
+#include "geometry/face_bvh.hpp"
+#include "geometry/implicit_point.hpp"
+#include "molsurf/mesh.hpp"
+
+namespace molsurf::boolean_engine {
+
+class RayParity {
+ public:
+  explicit RayParity(const Mesh& solid);
+  // Odd number of crossings: inside. Throws std::logic_error if the point is on a face.
+  bool inside(const Vec3& point) const;
+  bool inside(const geometry::ExactPoint& point) const;  // exact rational point (slow path)
+
+ private:
+  const Mesh& solid_;
+  geometry::BoxBvh tree_;
+  double max_x_ = 0;
+};
+
+}  // namespace molsurf::boolean_engine

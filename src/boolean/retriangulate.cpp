@@ -1,0 +1,218 @@
+#include "boolean/retriangulate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+
+namespace molsurf::boolean_engine {
+
+using geometry::ImplicitPoint;
+
+namespace {
+
+// Exact comparison of one coordinate of two implicit points.
+int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int axis) {
+  const geometry::Interval &a = p.coordinate(axis), &b = q.coordinate(axis);
+  if (a.hi < b.lo) return -1;
+  if (b.hi < a.lo) return 1;
+  return cmp(p.exact()[axis], q.exact()[axis]);
+}
+
+// Strictly between p and q on their common line (exactly collinear assumed): compare on
+// an axis along which p and q differ.
+bool strictly_between(const ImplicitPoint& p, const ImplicitPoint& x, const ImplicitPoint& q, const Projection& pr) {
+  for (int axis : {pr.u, pr.v}) {
+    const int pq = compare_coordinate(p, q, axis);
+    if (pq == 0) continue;
+    return compare_coordinate(p, x, axis) == pq && compare_coordinate(x, q, axis) == pq;
+  }
+  return false;
+}
+
+}  // namespace
+
+void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const Vec3& to,
+                        std::span<const ImplicitPoint> points) {
+  const Vec3 d = to - from;
+  const int axis = std::fabs(d.x) >= std::fabs(d.y) && std::fabs(d.x) >= std::fabs(d.z) ? 0
+                   : std::fabs(d.y) >= std::fabs(d.z)                                 ? 1
+                                                                                       : 2;
+  const bool ascending = d[axis] > 0;
+  std::sort(ids.begin(), ids.end(), [&](std::uint32_t i, std::uint32_t j) {
+    const int c = compare_coordinate(points[i], points[j], axis);
+    return ascending ? c < 0 : c > 0;
+  });
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
+    std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, std::span<const std::uint32_t> candidates,
+    const Projection& pr, std::span<const ImplicitPoint> points) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces;
+  for (auto [s, t] : segments) {
+    std::vector<std::uint32_t> inside;
+    for (std::uint32_t c : candidates) {
+      if (c == s || c == t) continue;
+      if (geometry::orient2d(points[s], points[t], points[c], pr.u, pr.v) != 0) continue;
+      if (strictly_between(points[s], points[c], points[t], pr)) inside.push_back(c);
+    }
+    if (inside.empty()) {
+      pieces.emplace_back(s, t);
+      continue;
+    }
+    // Order along s -> t on an axis where they differ.
+    const int axis = compare_coordinate(points[s], points[t], pr.u) != 0 ? pr.u : pr.v;
+    const int direction = compare_coordinate(points[s], points[t], axis);
+    std::sort(inside.begin(), inside.end(), [&](std::uint32_t i, std::uint32_t j) {
+      return compare_coordinate(points[i], points[j], axis) == direction;
+    });
+    std::uint32_t previous = s;
+    for (std::uint32_t c : inside) {
+      pieces.emplace_back(std::min(previous, c), std::max(previous, c));
+      previous = c;
+    }
+    pieces.emplace_back(std::min(previous, t), std::max(previous, t));
+  }
+  std::sort(pieces.begin(), pieces.end());
+  pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
+  return pieces;
+}
+
+namespace {
+
+class AdvancingFront {
+ public:
+  AdvancingFront(const FaceToSplit& face, std::span<const ImplicitPoint> points) : face_(face), all_(points) {
+    ids_ = face.boundary;
+    ids_.insert(ids_.end(), face.interior.begin(), face.interior.end());
+    for (std::uint32_t id : ids_) {
+      const ImplicitPoint& p = all_[id];
+      approx_.push_back({p.coordinate(face.projection.u).mid(), p.coordinate(face.projection.v).mid()});
+    }
+    std::unordered_map<std::uint32_t, int> local;
+    for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local.emplace(ids_[i], i);
+    const int nb = static_cast<int>(face.boundary.size());
+    for (int i = 0; i < nb; ++i) add_edge(i, (i + 1) % nb);
+    for (auto [s, t] : face.constraints) {
+      const int a = local.at(s), b = local.at(t);
+      add_edge(a, b);
+      add_edge(b, a);
+    }
+  }
+
+  std::vector<std::array<std::uint32_t, 3>> run() {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    const std::size_t limit = 4 * ids_.size() + 4 * face_.constraints.size() + 16;
+    while (!queue_.empty()) {
+      const auto [length, a, b] = *queue_.begin();
+      const int p = best_apex(a, b);
+      if (p < 0)
+        throw std::logic_error("boolean: the advancing front found no valid triangle on a front edge (" +
+                               std::to_string(ids_.size()) + " points)");
+      triangles.push_back({ids_[a], ids_[b], ids_[p]});
+      if (triangles.size() > limit) throw std::logic_error("boolean: the advancing front does not terminate");
+      remove_edge(a, b);
+      close_or_open(b, p);
+      close_or_open(p, a);
+    }
+    return triangles;
+  }
+
+ private:
+  using Edge = std::pair<int, int>;
+
+  int orient(int a, int b, int c) const {
+    return geometry::orient2d(all_[ids_[a]], all_[ids_[b]], all_[ids_[c]], face_.projection.u, face_.projection.v);
+  }
+
+  double approx_length(int a, int b) const {
+    return std::hypot(approx_[b][0] - approx_[a][0], approx_[b][1] - approx_[a][1]);
+  }
+
+  void add_edge(int a, int b) {
+    const double length = approx_length(a, b);
+    if (front_.emplace(Edge{a, b}, length).second) queue_.emplace(length, a, b);
+  }
+  void remove_edge(int a, int b) {
+    auto it = front_.find({a, b});
+    queue_.erase({it->second, a, b});
+    front_.erase(it);
+  }
+  // The new triangle's edge from -> to: closes the front edge (from, to) if the front has
+  // it (the region there is now filled), otherwise opens (to, from) on the far side.
+  void close_or_open(int from, int to) {
+    if (front_.count({from, to}))
+      remove_edge(from, to);
+    else
+      add_edge(to, from);
+  }
+
+  // Delaunay criterion: the apex whose circumcircle through a, b reaches least far to the
+  // left of ab (its centre's signed offset along the left normal). Approximate.
+  double delaunay_offset(int a, int b, int p) const {
+    const double ax = approx_[a][0], ay = approx_[a][1];
+    const double bx = approx_[b][0] - ax, by = approx_[b][1] - ay;
+    const double px = approx_[p][0] - ax, py = approx_[p][1] - ay;
+    const double d = 2 * (bx * py - by * px);
+    if (d <= 0) return std::numeric_limits<double>::infinity();
+    const double b2 = bx * bx + by * by, p2 = px * px + py * py;
+    const double cx = (py * b2 - by * p2) / d, cy = (bx * p2 - px * b2) / d;
+    // Offset of the centre from the midpoint along the left normal (-by, bx) / |b|.
+    return ((cx - bx / 2) * -by + (cy - by / 2) * bx) / std::sqrt(b2);
+  }
+
+  bool properly_crosses(int a, int b, int c, int d) const {
+    const int o1 = orient(a, b, c), o2 = orient(a, b, d);
+    if (o1 == 0 || o2 == 0 || o1 == o2) return false;
+    const int o3 = orient(c, d, a), o4 = orient(c, d, b);
+    return o3 != 0 && o4 != 0 && o3 != o4;
+  }
+
+  bool valid_triangle(int a, int b, int p) const {
+    const int n = static_cast<int>(ids_.size());
+    for (int q = 0; q < n; ++q) {
+      if (q == a || q == b || q == p) continue;
+      if (orient(a, b, q) >= 0 && orient(b, p, q) >= 0 && orient(p, a, q) >= 0) return false;
+    }
+    for (const auto& [edge, length] : front_) {
+      const auto [c, d] = edge;
+      for (auto [s, t] : {Edge{b, p}, Edge{p, a}}) {
+        if (c == s || c == t || d == s || d == t) continue;
+        if (properly_crosses(s, t, c, d)) return false;
+      }
+    }
+    return true;
+  }
+
+  int best_apex(int a, int b) const {
+    std::vector<std::pair<double, int>> candidates;
+    const int n = static_cast<int>(ids_.size());
+    for (int p = 0; p < n; ++p)
+      if (p != a && p != b && orient(a, b, p) > 0) candidates.emplace_back(delaunay_offset(a, b, p), p);
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [offset, p] : candidates)
+      if (valid_triangle(a, b, p)) return p;
+    return -1;
+  }
+
+  const FaceToSplit& face_;
+  std::span<const ImplicitPoint> all_;
+  std::vector<std::uint32_t> ids_;
+  std::vector<std::array<double, 2>> approx_;
+  std::map<Edge, double> front_;
+  std::set<std::tuple<double, int, int>> queue_;  // shortest front edge first
+};
+
+}  // namespace
+
+std::vector<std::array<std::uint32_t, 3>> retriangulate_face(const FaceToSplit& face,
+                                                             std::span<const ImplicitPoint> points) {
+  return AdvancingFront(face, points).run();
+}
+
+}  // namespace molsurf::boolean_engine

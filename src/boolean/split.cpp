@@ -1,0 +1,79 @@
+#include "boolean/split.hpp"
+
+#include <algorithm>
+
+#include "boolean/retriangulate.hpp"
+
+namespace molsurf::boolean_engine {
+
+namespace {
+
+struct FaceSplit {
+  std::vector<SubFace> sub_faces;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> curve_pieces;
+};
+
+FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint32_t f) {
+  FaceSplit out;
+  const auto& corners = ops.face(f);
+  FaceToSplit face;
+  face.projection = face_projection(ops.vertex(corners[0]), ops.vertex(corners[1]), ops.vertex(corners[2]));
+  std::vector<std::uint32_t> edge_run[3];  // each edge's points from its first corner to its second, corners included
+  for (int i = 0; i < 3; ++i) {
+    const std::uint32_t from = corners[i], to = corners[(i + 1) % 3];
+    std::vector<std::uint32_t> inside = arr.edge_points[ops.face_edges(f)[i]];
+    sort_along_segment(inside, ops.vertex(from), ops.vertex(to), arr.points);
+    edge_run[i].push_back(arr.vertex_point[from]);
+    edge_run[i].insert(edge_run[i].end(), inside.begin(), inside.end());
+    edge_run[i].push_back(arr.vertex_point[to]);
+    face.boundary.push_back(arr.vertex_point[from]);
+    face.boundary.insert(face.boundary.end(), inside.begin(), inside.end());
+  }
+  face.interior = arr.face_points[f];
+  std::vector<std::uint32_t> candidates = face.boundary;
+  candidates.insert(candidates.end(), face.interior.begin(), face.interior.end());
+  const auto pieces = split_segments_at_points(arr.face_segments[f], candidates, face.projection, arr.points);
+  for (auto [s, t] : pieces) {
+    out.curve_pieces.emplace_back(s, t);
+    bool on_boundary = false;
+    for (const auto& run : edge_run)
+      if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
+        on_boundary = true;
+    if (!on_boundary) face.constraints.emplace_back(s, t);
+  }
+  for (const auto& tri : retriangulate_face(face, arr.points)) out.sub_faces.push_back({tri, f});
+  return out;
+}
+
+}  // namespace
+
+SplitResult split_faces(const Operands& ops, const Arrangement& arr) {
+  const std::uint32_t face_count = ops.face_count();
+  std::vector<std::uint32_t> cut;
+  for (std::uint32_t f = 0; f < face_count; ++f)
+    if (arr.face_is_cut(ops, f)) cut.push_back(f);
+  std::vector<FaceSplit> pieces(cut.size());
+  const auto cut_count = static_cast<std::int64_t>(cut.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::int64_t k = 0; k < cut_count; ++k) pieces[k] = split_one_face(ops, arr, cut[k]);
+
+  SplitResult result;
+  result.split_faces = cut.size();
+  std::size_t next_cut = 0;
+  for (std::uint32_t f = 0; f < face_count; ++f) {
+    if (next_cut < cut.size() && cut[next_cut] == f) {
+      FaceSplit& p = pieces[next_cut++];
+      result.sub_faces.insert(result.sub_faces.end(), p.sub_faces.begin(), p.sub_faces.end());
+      result.intersection_edges.insert(result.intersection_edges.end(), p.curve_pieces.begin(), p.curve_pieces.end());
+      continue;
+    }
+    const auto& c = ops.face(f);
+    result.sub_faces.push_back({{arr.vertex_point[c[0]], arr.vertex_point[c[1]], arr.vertex_point[c[2]]}, f});
+  }
+  std::sort(result.intersection_edges.begin(), result.intersection_edges.end());
+  result.intersection_edges.erase(std::unique(result.intersection_edges.begin(), result.intersection_edges.end()),
+                                  result.intersection_edges.end());
+  return result;
+}
+
+}  // namespace molsurf::boolean_engine

@@ -1,0 +1,30 @@
+#pragma once
+// Step 5, stitch: the kept sub-faces, which share their intersection points, become one
+// mesh. Points are rounded to doubles only here, after every decision. Where the two
+// solids only touch (at a point or along an edge), the sheets are kept apart: the
+// touching vertex is duplicated once per fan of faces around it, so the result stays a
+// 2-manifold (see docs/boolean.md).
+#include <cstdint>
+#include <vector>
+
+#include "boolean/arrangement.hpp"
+#include "boolean/classify.hpp"
+#include "molsurf/boolean.hpp"
+
+namespace molsurf::boolean_engine {
+
+// Which sub-faces the operation keeps, and whether each is flipped (b's part of a difference).
+enum class Keep : std::uint8_t { drop, keep, keep_flipped };
+Keep select_sub_face(BooleanOp op, int operand, Side side);
+
+struct StitchResult {
+  Mesh mesh;
+  std::vector<std::uint8_t> face_operand;
+  std::vector<std::uint32_t> face_source;
+  std::size_t split_vertices = 0;
+};
+
+StitchResult stitch_sub_faces(const Operands& operands, const Arrangement& arrangement,
+                              const std::vector<SubFace>& sub_faces, const std::vector<Side>& sides, BooleanOp op);
+
+}  // namespace molsurf::boolean_engine

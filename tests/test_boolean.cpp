@@ -1,0 +1,138 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "mesh_fixtures.hpp"
+#include "molsurf/boolean.hpp"
+#include "molsurf/icosphere.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/shapes.hpp"
+
+namespace molsurf {
+namespace {
+
+::testing::AssertionResult valid(const Mesh& m) {
+  const MeshCheck c = check_mesh(m);
+  if (c.valid()) return ::testing::AssertionSuccess();
+  auto failure = ::testing::AssertionFailure();
+  for (const auto& d : c.defects()) failure << d << "\n";
+  return failure;
+}
+
+struct Volumes {
+  double a, b, uni, inter, diff;
+};
+
+// Runs the three operations, checks each result, and returns their volumes.
+Volumes run_all(const Mesh& a, const Mesh& b) {
+  Volumes v{signed_volume(a), signed_volume(b), 0, 0, 0};
+  const BooleanResult u = boolean(a, b, BooleanOp::union_);
+  const BooleanResult i = boolean(a, b, BooleanOp::intersection);
+  const BooleanResult d = boolean(a, b, BooleanOp::difference);
+  EXPECT_TRUE(valid(u.mesh)) << "union";
+  EXPECT_TRUE(valid(i.mesh)) << "intersection";
+  EXPECT_TRUE(valid(d.mesh)) << "difference";
+  v.uni = signed_volume(u.mesh);
+  v.inter = signed_volume(i.mesh);
+  v.diff = signed_volume(d.mesh);
+  return v;
+}
+
+void expect_volume_identities(const Volumes& v) {
+  const double scale = std::max(v.a, v.b);
+  EXPECT_NEAR(v.uni + v.inter, v.a + v.b, 1e-9 * scale);
+  EXPECT_NEAR(v.diff, v.a - v.inter, 1e-9 * scale);
+}
+
+TEST(Boolean, OverlappingSpheres) {
+  const Mesh a = make_icosphere({0, 0, 0}, 1.0, {.frequency = 6, .tag = 1});
+  const Mesh b = make_icosphere({0.9, 0.31, 0.17}, 0.8, {.frequency = 5, .tag = 2});
+  const Volumes v = run_all(a, b);
+  expect_volume_identities(v);
+  EXPECT_GT(v.inter, 0);
+  EXPECT_LT(v.uni, v.a + v.b);
+  const BooleanResult u = boolean(a, b, BooleanOp::union_);
+  EXPECT_GT(u.stats.intersection_points, 0u);
+  ASSERT_EQ(u.mesh.face_tags.size(), u.mesh.face_count());
+  ASSERT_EQ(u.face_operand.size(), u.mesh.face_count());
+  for (std::size_t f = 0; f < u.mesh.face_count(); ++f) EXPECT_EQ(u.mesh.face_tags[f], u.face_operand[f] + 1);
+}
+
+TEST(Boolean, DisjointSolids) {
+  const Mesh a = make_icosphere({0, 0, 0}, 1.0, {.frequency = 3});
+  const Mesh b = make_icosphere({5, 0, 0}, 1.0, {.frequency = 3});
+  const BooleanResult u = boolean(a, b, BooleanOp::union_);
+  EXPECT_EQ(u.mesh.face_count(), a.face_count() + b.face_count());
+  EXPECT_TRUE(valid(u.mesh));
+  const BooleanResult i = boolean(a, b, BooleanOp::intersection);
+  EXPECT_EQ(i.mesh.face_count(), 0u);
+  EXPECT_TRUE(valid(i.mesh));
+  const BooleanResult d = boolean(a, b, BooleanOp::difference);
+  EXPECT_EQ(d.mesh.face_count(), a.face_count());
+}
+
+TEST(Boolean, OneInsideTheOther) {
+  const Mesh outer = make_icosphere({0, 0, 0}, 2.0, {.frequency = 4});
+  const Mesh inner = make_icosphere({0.1, 0.2, 0.05}, 0.5, {.frequency = 3});
+  EXPECT_EQ(boolean(outer, inner, BooleanOp::union_).mesh.face_count(), outer.face_count());
+  EXPECT_EQ(boolean(outer, inner, BooleanOp::intersection).mesh.face_count(), inner.face_count());
+  const BooleanResult cavity = boolean(outer, inner, BooleanOp::difference);
+  EXPECT_EQ(cavity.mesh.face_count(), outer.face_count() + inner.face_count());
+  EXPECT_TRUE(valid(cavity.mesh));
+  EXPECT_NEAR(signed_volume(cavity.mesh), signed_volume(outer) - signed_volume(inner), 1e-12);
+}
+
+TEST(Boolean, IdenticalMeshes) {
+  const Mesh a = make_icosphere({0.5, 0, 0}, 1.0, {.frequency = 4});
+  const Volumes v = run_all(a, a);
+  EXPECT_NEAR(v.uni, v.a, 1e-12);
+  EXPECT_NEAR(v.inter, v.a, 1e-12);
+  EXPECT_NEAR(v.diff, 0, 1e-12);
+}
+
+TEST(Boolean, CubesSharingPartOfAFace) {
+  const Mesh a = make_box({0, 0, 0}, {2, 2, 2});
+  const Mesh b = make_box({1, 1, 2}, {3, 3, 4});  // sits on a's top face, overlapping a quarter of it
+  const Volumes v = run_all(a, b);
+  EXPECT_NEAR(v.uni, 16, 1e-12);
+  EXPECT_NEAR(v.inter, 0, 1e-12);
+  EXPECT_NEAR(v.diff, 8, 1e-12);
+}
+
+TEST(Boolean, OverlappingCubesWithCoplanarFaces) {
+  const Mesh a = make_box({0, 0, 0}, {2, 2, 2}, 2, 2, 2);
+  const Mesh b = make_box({1, 1, 0}, {3, 3, 2}, 3, 3, 1);  // same bottom and top planes
+  const Volumes v = run_all(a, b);
+  EXPECT_NEAR(v.uni, 14, 1e-12);
+  EXPECT_NEAR(v.inter, 2, 1e-12);
+  EXPECT_NEAR(v.diff, 6, 1e-12);
+}
+
+TEST(Boolean, SphereAgainstARotatedCopy) {
+  const Mesh a = make_icosphere({0, 0, 0}, 1.0, {.frequency = 5});
+  const Mesh b = transformed(a, {.axis = {0.3, 0.5, 0.8}, .angle = 1e-12});
+  const Volumes v = run_all(a, b);
+  expect_volume_identities(v);
+}
+
+TEST(Boolean, TouchingAtOneVertex) {
+  const Mesh a = make_box({0, 0, 0}, {1, 1, 1});
+  const Mesh b = make_box({1, 1, 1}, {2, 2, 2});
+  const BooleanResult u = boolean(a, b, BooleanOp::union_);
+  EXPECT_TRUE(valid(u.mesh));
+  EXPECT_EQ(u.mesh.face_count(), 24u);
+  EXPECT_EQ(u.stats.split_vertices, 1u);
+  EXPECT_NEAR(signed_volume(u.mesh), 2, 1e-12);
+}
+
+TEST(Boolean, TouchingAlongAnEdge) {
+  const Mesh a = make_box({0, 0, 0}, {1, 1, 1});
+  const Mesh b = make_box({1, 1, 0}, {2, 2, 1});
+  const BooleanResult u = boolean(a, b, BooleanOp::union_);
+  EXPECT_TRUE(valid(u.mesh));
+  EXPECT_NEAR(signed_volume(u.mesh), 2, 1e-12);
+}
+
+}  // namespace
+}  // namespace molsurf
