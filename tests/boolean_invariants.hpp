@@ -1,0 +1,41 @@
+#pragma once
+// What every Boolean result must satisfy, whatever the operands.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "molsurf/boolean.hpp"
+#include "molsurf/mesh_check.hpp"
+
+namespace molsurf::testing {
+
+inline ::testing::AssertionResult valid_surface(const Mesh& m) {
+  const MeshCheck c = check_mesh(m);
+  if (c.valid()) return ::testing::AssertionSuccess();
+  auto failure = ::testing::AssertionFailure();
+  for (const auto& d : c.defects()) failure << d << "\n";
+  return failure;
+}
+
+// Union, intersection and difference are valid, and vol(A u B) + vol(A n B) =
+// vol(A) + vol(B), vol(A - B) = vol(A) - vol(A n B), to 1e-9 relative.
+inline void expect_boolean_invariants(const Mesh& a, const Mesh& b, const std::string& what) {
+  double volume[3] = {0, 0, 0};
+  const BooleanOp ops[3] = {BooleanOp::union_, BooleanOp::intersection, BooleanOp::difference};
+  for (int k = 0; k < 3; ++k) {
+    try {
+      const BooleanResult r = boolean(a, b, ops[k]);
+      EXPECT_TRUE(valid_surface(r.mesh)) << what << ": " << boolean_op_name(ops[k]);
+      volume[k] = signed_volume(r.mesh);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << what << ": " << boolean_op_name(ops[k]) << " threw: " << e.what();
+      return;
+    }
+  }
+  const double va = signed_volume(a), vb = signed_volume(b), scale = std::max({va, vb, 1e-300});
+  EXPECT_NEAR(volume[0] + volume[1], va + vb, 1e-9 * scale) << what;
+  EXPECT_NEAR(volume[2], va - volume[1], 1e-9 * scale) << what;
+}
+
+}  // namespace molsurf::testing
