@@ -123,5 +123,40 @@ TEST(Cli, CheckOfAnUnreadableFileIsAnError) {
   EXPECT_NE(r.err.find("bad.off"), std::string::npos) << r.err;
 }
 
+TEST(Cli, BooleanOfTwoMeshFiles) {
+  TempDir dir;
+  write_mesh(dir.path() / "a.ply", make_icosphere({0, 0, 0}, 1.0, {.frequency = 4}));
+  write_mesh(dir.path() / "b.off", make_icosphere({0.7, 0.2, 0.1}, 0.9, {.frequency = 4}));
+  auto r = run_molsurf("boolean union a.ply b.off -o u.vtp", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("VALID"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("intersect"), std::string::npos) << r.out;
+  const auto check = run_molsurf("check u.vtp", dir.path());
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+}
+
+TEST(Cli, BooleanOfDisjointSolidsIsAnEmptyIntersection) {
+  TempDir dir;
+  write_mesh(dir.path() / "a.ply", make_icosphere({0, 0, 0}, 1.0, {.frequency = 2}));
+  write_mesh(dir.path() / "b.ply", make_icosphere({5, 0, 0}, 1.0, {.frequency = 2}));
+  const auto r = run_molsurf("boolean intersection a.ply b.ply -o i.off", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("zero faces"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "i.off"));
+}
+
+TEST(Cli, BooleanRefusesAnInvalidOperand) {
+  TempDir dir;
+  Mesh holed = make_icosphere({}, 1, {.frequency = 2});
+  holed.faces.pop_back();
+  write_mesh(dir.path() / "holed.off", holed);
+  write_mesh(dir.path() / "b.off", make_icosphere({0.5, 0, 0}, 1.0, {.frequency = 2}));
+  const auto r = run_molsurf("boolean union holed.off b.off -o u.off", dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("holed.off"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("boundary"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "u.off"));
+}
+
 }  // namespace
 }  // namespace molsurf

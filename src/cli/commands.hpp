@@ -31,4 +31,13 @@ struct CheckCommand {
   int run() const;
 };
 
+struct BooleanCommand {
+  std::string operation;
+  std::filesystem::path a, b, output;
+  bool quiet = false;
+
+  void add_options(CLI::App& app);
+  int run() const;
+};
+
 }  // namespace molsurf::cli

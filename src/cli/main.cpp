@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
       "(radius r_vdW + probe), each triangulated as an icosphere, joined by exact mesh union.\n\n"
       "Usage:\n"
       "  molsurf [OPTIONS] STRUCTURE        surface of a .pdb .cif .pqr .xyzr file (.gz too)\n"
-      "  molsurf check [OPTIONS] MESH       is a mesh a valid closed surface?",
+      "  molsurf check [OPTIONS] MESH       is a mesh a valid closed surface?\n"
+      "  molsurf boolean OP A B -o OUT      union | intersection | difference of two meshes",
       "molsurf"};
   app.set_version_flag("--version", "molsurf " MOLSURF_VERSION);
   app.require_subcommand(0, 1);
@@ -30,9 +31,17 @@ int main(int argc, char** argv) {
       "no self-intersection (decided with exact predicates). Exit status 0 only for a valid surface.");
   check.add_options(*check_app);
 
+  BooleanCommand boolean;
+  CLI::App* boolean_app = app.add_subcommand(
+      "boolean",
+      "Union, intersection or difference of two closed meshes (any readable format), by the exact\n"
+      "engine; prints the result's validation, area, volume and the time of each step.");
+  boolean.add_options(*boolean_app);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (check_app->parsed()) return check.run();
+    if (boolean_app->parsed()) return boolean.run();
     if (surface.structure.empty()) {
       std::cerr << "molsurf: no structure file given\nRun with --help for more information.\n";
       return 2;
