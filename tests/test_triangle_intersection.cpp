@@ -114,10 +114,15 @@ TEST(TrianglePair, SharedVertex) {
   EXPECT_EQ(pair({-1, 0, 0}, {0, -1, 0}), Relation::apart);         // coplanar, edges collinear but apart
   EXPECT_EQ(pair({1, 0.2, 0}, {0.2, 1, 0}), Relation::intersecting);  // coplanar, inside the other
   EXPECT_EQ(pair({0.5, 0.5, -1}, {0.5, 0.5, 1}), Relation::intersecting);  // pierces it
-  EXPECT_EQ(pair({1, 0, 0}, {1, 0, 1}), Relation::intersecting);  // lies along the shared edge's line
+  // Stands on the first face's edge from v: the faces touch along a segment, no crossing.
+  EXPECT_EQ(pair({1, 0, 0}, {1, 0, 1}), Relation::contact);
   EXPECT_EQ(pair({3, -3, -1}, {3, -3, 1}), Relation::apart);       // straddles the plane, misses
   // A vertical wedge from v over the diagonal x = y: cuts the face along a segment from v.
   EXPECT_EQ(pair({3, 3, -1}, {3, 3, 1}), Relation::intersecting);
+  // A vertical face over the diagonal standing on it (not through it): a contact.
+  EXPECT_EQ(pair({3, 3, 0}, {3, 3, 1}), Relation::contact);
+  // Coplanar, one inside the other but facing the other way: pressed face to face.
+  EXPECT_EQ(pair({0.2, 1, 0}, {1, 0.2, 0}), Relation::contact);
 }
 
 TEST(TrianglePair, NoSharedIndex) {

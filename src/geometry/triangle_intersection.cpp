@@ -120,11 +120,21 @@ TrianglePairRelation classify_shared_edge(const Vec3& u, const Vec3& v, const Ve
 
 TrianglePairRelation classify_shared_vertex(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& c,
                                             const Vec3& d) {
-  if (strictly_same_side(orient3d(v, a, b, c), orient3d(v, a, b, d))) return TrianglePairRelation::apart;
+  const int side_c = orient3d(v, a, b, c), side_d = orient3d(v, a, b, d);
+  if (strictly_same_side(side_c, side_d)) return TrianglePairRelation::apart;
   if (strictly_same_side(orient3d(v, c, d, a), orient3d(v, c, d, b))) return TrianglePairRelation::apart;
-  if (segment_meets_triangle(a, b, v, c, d).meets || segment_meets_triangle(c, d, v, a, b).meets)
+  const SegmentTriangleMeeting ab_in_t2 = segment_meets_triangle(a, b, v, c, d);
+  const SegmentTriangleMeeting cd_in_t1 = segment_meets_triangle(c, d, v, a, b);
+  if (!ab_in_t2.meets && !cd_in_t1.meets) return TrianglePairRelation::apart;
+  // They meet beyond v. Only an opposite edge can cross the other face properly (an edge
+  // through v starts on the other face's plane).
+  if (ab_in_t2.proper || cd_in_t1.proper) return TrianglePairRelation::intersecting;
+  if (side_c == 0 && side_d == 0 &&
+      coplanar_interiors_overlap({v, a, b}, {v, c, d}) == CoplanarOverlap::same_facing)
     return TrianglePairRelation::intersecting;
-  return TrianglePairRelation::apart;
+  // Touching along a segment from v (e.g. where a Boolean result's sheets touch along
+  // an edge that ends where they join), or coplanar faces pressed face to face.
+  return TrianglePairRelation::contact;
 }
 
 TrianglePairRelation classify_disjoint_indices(const std::array<Vec3, 3>& t1, const std::array<Vec3, 3>& t2) {

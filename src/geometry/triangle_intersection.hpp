@@ -51,8 +51,10 @@ enum class TrianglePairRelation {
 //    same side of plane vab, or a, b strictly on the same side of plane vcd (they meet
 //    only at v). Otherwise they meet beyond v iff segment ab meets closed triangle vcd or
 //    segment cd meets closed triangle vab (their intersection is convex and contains v;
-//    any other point needs a boundary piece not on a line through v). Meeting beyond the
-//    shared vertex is intersecting.
+//    any other point needs a boundary piece not on a line through v). Meeting beyond v is
+//    intersecting when ab or cd properly crosses the other face, or when the faces are
+//    coplanar with overlapping interiors facing the same way; otherwise it is a contact
+//    (the faces touch along a segment from v, or lie face to face).
 //  - No shared index: they meet iff an edge of one meets the other closed triangle (both
 //    directions). If so it is intersecting when some edge properly crosses the other
 //    triangle (see SegmentTriangleMeeting::proper), or when the faces are coplanar,
