@@ -134,5 +134,23 @@ TEST(Boolean, TouchingAlongAnEdge) {
   EXPECT_NEAR(signed_volume(u.mesh), 2, 1e-12);
 }
 
+TEST(Boolean, TunnelTouchingTheOuterFaceAlongAnEdge) {
+  // A diamond prism through a cube, its top edge lying on the cube's top face: carving it
+  // out leaves a tunnel whose ridge touches the top face from inside. Along the ridge four
+  // faces meet, and at its ends (on the cube's sides) the sheets join, so the pairs that
+  // bound material (one face of each operand) must be found by their order around the edge.
+  const Mesh cube = make_box({0, 0, 0}, {4, 4, 4});
+  Mesh prism = make_box({0, 0, 0}, {1, 1, 1});
+  for (Vec3& v : prism.vertices) v = Vec3{-1, 2, 2} + v.x * Vec3{6, 0, 0} + v.y * Vec3{0, 1, 1} + v.z * Vec3{0, -1, 1};
+  ASSERT_NEAR(signed_volume(prism), 12, 1e-12);
+  const BooleanResult carved = boolean(cube, prism, BooleanOp::difference);
+  EXPECT_TRUE(valid(carved.mesh));
+  EXPECT_NEAR(signed_volume(carved.mesh), 64 - 8, 1e-12);
+  EXPECT_GT(carved.stats.split_vertices, 0u);
+  const Volumes v = run_all(cube, prism);
+  EXPECT_NEAR(v.uni, 64 + 4, 1e-12);
+  EXPECT_NEAR(v.inter, 8, 1e-12);
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -19,5 +19,15 @@ TEST_P(RandomPairs, ValidResultsAndExactVolumes) {
 
 INSTANTIATE_TEST_SUITE_P(Seeds, RandomPairs, ::testing::Range(0, 6));
 
+// Pairs from the full battery that once failed: sheets touching along a segment that
+// ends where they join (1017 ... 1221), and a cavity touching the outer surface along an
+// edge where the faces bounding material are one of each operand (1399).
+TEST(RandomPairsRegression, OnceFailingSeeds) {
+  for (int seed : {1017, 1035, 1037, 1077, 1181, 1207, 1221, 1399}) {
+    const auto pair = testing::random_pair(static_cast<std::uint64_t>(seed));
+    testing::expect_boolean_invariants(pair.a, pair.b, "seed " + std::to_string(seed) + ": " + pair.description);
+  }
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -1,6 +1,8 @@
 #include "boolean/stitch.hpp"
 
 #include <algorithm>
+#include <array>
+#include <gmpxx.h>
 #include <numeric>
 #include <unordered_map>
 
@@ -53,10 +55,70 @@ Vec3 rounded_point(const geometry::ImplicitPoint& p) {
   return mid;
 }
 
+using QVec = std::array<mpq_class, 3>;
+
+QVec exact_of(const geometry::ImplicitPoint& p) {
+  const geometry::ExactPoint e = p.exact();
+  return {e.x, e.y, e.z};
+}
+QVec minus(const QVec& a, const QVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+mpq_class dot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+QVec cross(const QVec& a, const QVec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Where more than two faces share an edge (the solids touch along it), pairs the faces
+// that bound the same material sector, exactly: the faces are sorted by angle around the
+// edge, and a face whose material lies counter-clockwise of it (around t = to - from)
+// is paired with the next face counter-clockwise. Returns pairs of indices into `faces`.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> pair_faces_around_edge(
+    const Mesh& m, const std::vector<std::uint32_t>& point_of_vertex, const Arrangement& arr, std::uint32_t from,
+    std::uint32_t to, const std::vector<std::uint32_t>& faces) {
+  const QVec p0 = exact_of(arr.points[point_of_vertex[from]]);
+  const QVec t = minus(exact_of(arr.points[point_of_vertex[to]]), p0);
+  const mpq_class tt = dot(t, t);
+  struct Sheet {
+    std::uint32_t face;
+    QVec direction;             // the face's half-plane, perpendicular to t
+    bool material_ccw = false;  // the face traverses to -> from
+  };
+  std::vector<Sheet> sheets;
+  for (std::uint32_t f : faces) {
+    const Triangle& tri = m.faces[f];
+    int k = 0;
+    while (tri[k] == from || tri[k] == to) ++k;
+    const QVec u = minus(exact_of(arr.points[point_of_vertex[tri[k]]]), p0);
+    const mpq_class along = dot(u, t) / tt;
+    Sheet s{f, {u[0] - along * t[0], u[1] - along * t[1], u[2] - along * t[2]}};
+    // Counter-clockwise order (from, to, wing) gives the normal t x d: material clockwise.
+    s.material_ccw = tri[(k + 1) % 3] == to;
+    sheets.push_back(std::move(s));
+  }
+  // Angle of each direction from the first, counter-clockwise around t, compared exactly:
+  // first by half (sine >= 0 before sine < 0), then by the sign of the cross product.
+  const QVec& ref = sheets[0].direction;
+  auto upper_half = [&](const QVec& d) {
+    const int sine = sgn(dot(t, cross(ref, d)));
+    return sine > 0 || (sine == 0 && sgn(dot(ref, d)) > 0);
+  };
+  std::sort(sheets.begin() + 1, sheets.end(), [&](const Sheet& a, const Sheet& b) {
+    const bool ua = upper_half(a.direction), ub = upper_half(b.direction);
+    if (ua != ub) return ua;
+    return sgn(dot(t, cross(a.direction, b.direction))) > 0;
+  });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  const std::size_t n = sheets.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (sheets[i].material_ccw && !sheets[(i + 1) % n].material_ccw)
+      pairs.emplace_back(sheets[i].face, sheets[(i + 1) % n].face);
+  return pairs;
+}
+
 // Duplicates every vertex whose faces form more than one fan. Faces are joined across an
-// edge with exactly two faces, or, where both solids pass along an edge (two faces of
-// each operand), across the edge within each operand.
-std::size_t split_touching_vertices(StitchResult& r) {
+// edge with exactly two faces, or, where the solids touch along an edge, across the
+// material sectors found by pair_faces_around_edge.
+std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint32_t>& point_of_vertex,
+                                    const Arrangement& arr) {
   Mesh& m = r.mesh;
   const auto face_count = static_cast<std::uint32_t>(m.faces.size());
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_of_edge;
@@ -80,11 +142,8 @@ std::size_t split_touching_vertices(StitchResult& r) {
     const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
     if (faces.size() == 2) {
       join(faces[0], faces[1], a, b);
-    } else if (faces.size() == 4) {
-      std::vector<std::uint32_t> by_operand[2];
-      for (std::uint32_t f : faces) by_operand[r.face_operand[f]].push_back(f);
-      if (by_operand[0].size() == 2 && by_operand[1].size() == 2)
-        for (const auto& pair : by_operand) join(pair[0], pair[1], a, b);
+    } else if (faces.size() > 2) {
+      for (auto [f, g] : pair_faces_around_edge(m, point_of_vertex, arr, a, b, faces)) join(f, g, a, b);
     }
   }
   // The first fan (lowest slot) of each vertex keeps it; every other fan gets a copy.
@@ -112,9 +171,11 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
                               const std::vector<Side>& sides, BooleanOp op) {
   StitchResult r;
   std::vector<std::uint32_t> vertex_of_point(arr.points.size(), ~0u);
+  std::vector<std::uint32_t> point_of_vertex;
   auto vertex = [&](std::uint32_t p) {
     if (vertex_of_point[p] == ~0u) {
       vertex_of_point[p] = static_cast<std::uint32_t>(r.mesh.vertices.size());
+      point_of_vertex.push_back(p);
       r.mesh.vertices.push_back(rounded_point(arr.points[p]));
     }
     return vertex_of_point[p];
@@ -132,7 +193,7 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
     r.face_source.push_back(source);
     if (tagged) r.mesh.face_tags.push_back(ops.mesh(operand).tag(source));
   }
-  r.split_vertices = split_touching_vertices(r);
+  r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
   return r;
 }
 
