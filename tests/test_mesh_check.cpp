@@ -9,6 +9,7 @@
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "molsurf/shapes.hpp"
 
 using molsurf::check_mesh;
 using molsurf::Mesh;
@@ -306,4 +307,31 @@ TEST(MeshCheck, DISABLED_TwoMillionFacesTiming) {
   std::printf("check_mesh: %zu faces in %.2f s\n", c.faces, seconds);
   EXPECT_EQ(c.faces, 2000000u);
   EXPECT_TRUE(c.valid());
+}
+
+// Nesting is decided by exact ray parity, not by bounding boxes: a sphere in the duct of a
+// channel lies inside the channel's box but outside the solid.
+TEST(MeshCheckNesting, InsideOutSphereInAChannelsDuctIsInward) {
+  Mesh m = molsurf::make_channel(4, 2, 10, 4, 2);
+  Mesh sphere = molsurf::make_icosphere({0, 0, 5}, 0.5, {.frequency = 2});
+  for (molsurf::Triangle& t : sphere.faces) std::swap(t[1], t[2]);
+  m.append(sphere);
+  const molsurf::MeshCheck c = molsurf::check_mesh(m);
+  EXPECT_EQ(c.inward_components, 1u);
+  EXPECT_FALSE(c.valid());
+}
+
+TEST(MeshCheckNesting, IslandInACavityFacesOutward) {
+  Mesh m = molsurf::make_icosphere({0, 0, 0}, 3, {.frequency = 4});
+  Mesh cavity = molsurf::make_icosphere({0, 0, 0}, 2, {.frequency = 4});
+  for (molsurf::Triangle& t : cavity.faces) std::swap(t[1], t[2]);
+  m.append(cavity);
+  m.append(molsurf::make_icosphere({0.1, 0, 0}, 1, {.frequency = 3}));  // solid again
+  molsurf::MeshCheck c = molsurf::check_mesh(m);
+  EXPECT_TRUE(c.valid()) << ::testing::PrintToString(c.defects());
+  EXPECT_EQ(c.components, 3u);
+  // The same island facing inward is wrong.
+  for (std::size_t f = m.faces.size() - 20 * 9; f < m.faces.size(); ++f) std::swap(m.faces[f][1], m.faces[f][2]);
+  c = molsurf::check_mesh(m);
+  EXPECT_EQ(c.inward_components, 1u);
 }

@@ -6,7 +6,7 @@
 #include <unordered_set>
 
 #include "boolean/intersect.hpp"
-#include "boolean/ray_parity.hpp"
+#include "geometry/ray_parity.hpp"
 
 namespace molsurf::boolean_engine {
 
@@ -83,7 +83,7 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   std::iota(members.begin(), members.end(), 0u);
   std::stable_sort(members.begin(), members.end(), [&](std::uint32_t x, std::uint32_t y) { return root[x] < root[y]; });
 
-  const RayParity rays[2] = {RayParity(ops.mesh(1)), RayParity(ops.mesh(0))};  // against the other operand
+  const geometry::RayParity rays[2] = {geometry::RayParity(ops.mesh(1)), geometry::RayParity(ops.mesh(0))};  // against the other operand
   std::vector<std::uint8_t> inside_patch(n, 0);
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = begin;

@@ -12,16 +12,19 @@
 //  - Duplicate faces: the same vertex set as an earlier face (either orientation).
 //  - Self-intersections: all face pairs whose closed boxes overlap, classified exactly by
 //    geometry::classify_triangle_pair (contacts are counted apart and are not defects).
-//  - Inward components: a component (faces connected through shared vertices) is inward
-//    when its signed volume is <= 0 and it is not nested in another component. Nested is
-//    SIMPLIFIED to "its bounding box lies inside the bounding box of another component
-//    with positive volume"; an exact point-in-solid test (ray parity) will replace it.
-//    The volume sign itself is a floating-point sum, not an exact predicate.
+//  - Inward components: a component (faces connected through shared vertices) inside an
+//    odd number of other components (exact ray parity, geometry/ray_parity.hpp) is a
+//    cavity and must have negative volume; any other must have positive volume. When the
+//    mesh is not closed, ray parity means nothing and the rule falls back to the volume
+//    sign of components that no other component's bounding box contains. The volume sign
+//    itself is a floating-point sum (robust for any solid of non-negligible volume).
 //  - An empty mesh (no faces) is valid: there is nothing wrong with it.
 #include "molsurf/mesh_check.hpp"
 
 #include <algorithm>
 #include <array>
+#include <memory>
+#include <stdexcept>
 #include <cstdint>
 #include <numeric>
 #include <sstream>
@@ -29,6 +32,7 @@
 #include <vector>
 
 #include "geometry/face_bvh.hpp"
+#include "geometry/ray_parity.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "molsurf/error.hpp"
@@ -312,12 +316,49 @@ void check_components(const Mesh& mesh, MeshCheck& result) {
     b.min = {std::min(b.min.x, fb.min.x), std::min(b.min.y, fb.min.y), std::min(b.min.z, fb.min.z)};
     b.max = {std::max(b.max.x, fb.max.x), std::max(b.max.y, fb.max.y), std::max(b.max.z, fb.max.z)};
   }
+  if (!result.closed() || result.nonmanifold_edges > 0) {
+    // Without closed components "inside" means nothing: fall back to the volume sign of
+    // components that no other component's box contains.
+    for (std::size_t c = 0; c < components.count; ++c) {
+      if (volume[c] > 0) continue;
+      bool nested = false;
+      for (std::size_t other = 0; other < components.count && !nested; ++other)
+        nested = other != c && volume[other] > 0 && box_contains(box[other], box[c]);
+      if (!nested) ++result.inward_components;
+    }
+    return;
+  }
+  // Nesting depth by exact ray parity: a component inside an odd number of others is a
+  // cavity and must face inward (negative volume); otherwise it must face outward.
+  std::vector<std::vector<std::uint32_t>> faces_of(components.count);
+  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) faces_of[components.face_component[f]].push_back(f);
+  std::vector<std::unique_ptr<Mesh>> solid(components.count);
+  std::vector<std::unique_ptr<geometry::RayParity>> rays(components.count);
+  auto ray_of = [&](std::size_t d) -> const geometry::RayParity& {
+    if (!rays[d]) {
+      solid[d] = std::make_unique<Mesh>();
+      solid[d]->vertices = mesh.vertices;
+      for (std::uint32_t f : faces_of[d]) solid[d]->faces.push_back(mesh.faces[f]);
+      rays[d] = std::make_unique<geometry::RayParity>(*solid[d]);
+    }
+    return *rays[d];
+  };
   for (std::size_t c = 0; c < components.count; ++c) {
-    if (volume[c] > 0) continue;
-    bool nested = false;
-    for (std::size_t other = 0; other < components.count && !nested; ++other)
-      nested = other != c && volume[other] > 0 && box_contains(box[other], box[c]);
-    if (!nested) ++result.inward_components;
+    std::size_t depth = 0;
+    for (std::size_t d = 0; d < components.count; ++d) {
+      if (d == c || !box_contains(box[d], box[c])) continue;
+      // Any vertex of c not on d's surface decides (they cannot cross: that is checked
+      // apart); a vertex on d's surface (a contact) tells nothing, so try the next.
+      for (std::uint32_t f : faces_of[c]) {
+        try {
+          if (ray_of(d).inside(mesh.vertices[mesh.faces[f][0]])) ++depth;
+          break;
+        } catch (const std::logic_error&) {
+        }
+      }
+    }
+    const bool cavity = depth % 2 == 1;
+    if (cavity ? volume[c] >= 0 : volume[c] <= 0) ++result.inward_components;
   }
 }
 

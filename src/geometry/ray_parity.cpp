@@ -1,14 +1,14 @@
-#include "boolean/ray_parity.hpp"
+#include "geometry/ray_parity.hpp"
 
 #include <stdexcept>
 
 #include "geometry/predicates.hpp"
 
-namespace molsurf::boolean_engine {
+namespace molsurf::geometry {
 
-using geometry::ExactPoint;
 
-RayParity::RayParity(const Mesh& solid) : solid_(solid), tree_(geometry::BoxBvh::for_faces(solid)) {
+
+RayParity::RayParity(const Mesh& solid) : solid_(solid), tree_(BoxBvh::for_faces(solid)) {
   max_x_ = bounding_box(solid).max.x;
 }
 
@@ -33,15 +33,15 @@ int sign_of(const T& v) {
 // Does the perturbed ray from x cross triangle abc? Coordinates of type T (double with
 // exact predicates, or mpq_class).
 bool crosses(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
-  const int nx = geometry::orient2d(a.y, a.z, b.y, b.z, c.y, c.z);
+  const int nx = orient2d(a.y, a.z, b.y, b.z, c.y, c.z);
   if (nx == 0) return false;  // parallel to the ray: the perturbed ray misses it
   const Vec3* corner[3] = {&a, &b, &c};
   for (int i = 0; i < 3; ++i) {
     const Vec3 &p = *corner[i], &q = *corner[(i + 1) % 3];
-    const int d0 = geometry::orient2d(p.y, p.z, q.y, q.z, x.y, x.z);
+    const int d0 = orient2d(p.y, p.z, q.y, q.z, x.y, x.z);
     if (perturbed_side(d0, p.y, p.z, q.y, q.z) != nx) return false;
   }
-  const int o = geometry::orient3d(a, b, c, x);
+  const int o = orient3d(a, b, c, x);
   if (o == 0) throw std::logic_error("boolean: ray origin lies on a face of the other solid");
   return o != nx;
 }
@@ -71,7 +71,7 @@ bool crosses(const Vec3& a, const Vec3& b, const Vec3& c, const ExactPoint& x) {
 }
 
 template <class Point>
-bool parity(const Mesh& solid, const geometry::BoxBvh& tree, const BoundingBox& query, const Point& x) {
+bool parity(const Mesh& solid, const BoxBvh& tree, const BoundingBox& query, const Point& x) {
   bool inside = false;
   tree.for_each_overlap(query, [&](std::uint32_t f) {
     const Triangle& t = solid.faces[f];
@@ -103,4 +103,4 @@ bool RayParity::inside(const ExactPoint& x) const {
   return parity(solid_, tree_, query, x);
 }
 
-}  // namespace molsurf::boolean_engine
+}  // namespace molsurf::geometry

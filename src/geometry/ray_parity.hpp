@@ -9,19 +9,19 @@
 #include "geometry/implicit_point.hpp"
 #include "molsurf/mesh.hpp"
 
-namespace molsurf::boolean_engine {
+namespace molsurf::geometry {
 
 class RayParity {
  public:
   explicit RayParity(const Mesh& solid);
   // Odd number of crossings: inside. Throws std::logic_error if the point is on a face.
   bool inside(const Vec3& point) const;
-  bool inside(const geometry::ExactPoint& point) const;  // exact rational point (slow path)
+  bool inside(const ExactPoint& point) const;  // exact rational point (slow path)
 
  private:
   const Mesh& solid_;
-  geometry::BoxBvh tree_;
+  BoxBvh tree_;
   double max_x_ = 0;
 };
 
-}  // namespace molsurf::boolean_engine
+}  // namespace molsurf::geometry
