@@ -21,9 +21,10 @@ INSTANTIATE_TEST_SUITE_P(Seeds, RandomPairs, ::testing::Range(0, 6));
 
 // Pairs from the full battery that once failed: sheets touching along a segment that
 // ends where they join (1017 ... 1221), and a cavity touching the outer surface along an
-// edge where the faces bounding material are one of each operand (1399).
+// edge where the faces bounding material are one of each operand (1399, 1951), and such
+// an edge whose two ends are where the sheets join (1099, 1161, 1781).
 TEST(RandomPairsRegression, OnceFailingSeeds) {
-  for (int seed : {1017, 1035, 1037, 1077, 1181, 1207, 1221, 1399}) {
+  for (int seed : {1017, 1035, 1037, 1077, 1099, 1161, 1181, 1207, 1221, 1399, 1781, 1951}) {
     const auto pair = testing::random_pair(static_cast<std::uint64_t>(seed));
     testing::expect_boolean_invariants(pair.a, pair.b, "seed " + std::to_string(seed) + ": " + pair.description);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -52,7 +53,8 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
     std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, std::span<const std::uint32_t> candidates,
-    const Projection& pr, std::span<const ImplicitPoint> points) {
+    const Projection& pr, std::span<const ImplicitPoint> points,
+    std::vector<std::vector<std::uint32_t>>& collinear_sets) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces;
   for (auto [s, t] : segments) {
     std::vector<std::uint32_t> inside;
@@ -61,6 +63,9 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
       if (geometry::orient2d(points[s], points[t], points[c], pr.u, pr.v) != 0) continue;
       if (strictly_between(points[s], points[c], points[t], pr)) inside.push_back(c);
     }
+    collinear_sets.push_back(inside);
+    collinear_sets.back().push_back(s);
+    collinear_sets.back().push_back(t);
     if (inside.empty()) {
       pieces.emplace_back(s, t);
       continue;
@@ -96,6 +101,11 @@ class AdvancingFront {
     }
     std::unordered_map<std::uint32_t, int> local;
     for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local.emplace(ids_[i], i);
+    lines_.assign(ids_.size(), 0);
+    exact_.resize(ids_.size());
+    for (std::size_t k = 0; k < face.collinear_sets.size() && k < 64; ++k)
+      for (std::uint32_t id : face.collinear_sets[k])
+        if (auto it = local.find(id); it != local.end()) lines_[it->second] |= std::uint64_t{1} << k;
     const int nb = static_cast<int>(face.boundary.size());
     for (int i = 0; i < nb; ++i) add_edge(i, (i + 1) % nb);
     for (auto [s, t] : face.constraints) {
@@ -127,7 +137,21 @@ class AdvancingFront {
   using Edge = std::pair<int, int>;
 
   int orient(int a, int b, int c) const {
-    return geometry::orient2d(all_[ids_[a]], all_[ids_[b]], all_[ids_[c]], face_.projection.u, face_.projection.v);
+    if (lines_[a] & lines_[b] & lines_[c]) return 0;  // collinear by construction
+    const ImplicitPoint &pa = all_[ids_[a]], &pb = all_[ids_[b]], &pc = all_[ids_[c]];
+    const int u = face_.projection.u, v = face_.projection.v;
+    if (pa.is_explicit() && pb.is_explicit() && pc.is_explicit()) return geometry::orient2d(pa, pb, pc, u, v);
+    const geometry::Interval filtered = (pb.coordinate(u) - pa.coordinate(u)) * (pc.coordinate(v) - pa.coordinate(v)) -
+                                        (pb.coordinate(v) - pa.coordinate(v)) * (pc.coordinate(u) - pa.coordinate(u));
+    if (const int s = filtered.certain_sign()) return s;
+    const geometry::ExactPoint &ea = exact(a), &eb = exact(b), &ec = exact(c);
+    return sgn(mpq_class((eb[u] - ea[u]) * (ec[v] - ea[v]) - (eb[v] - ea[v]) * (ec[u] - ea[u])));
+  }
+
+  // Exact coordinates, built once per point of this face.
+  const geometry::ExactPoint& exact(int i) const {
+    if (!exact_[i]) exact_[i] = all_[ids_[i]].exact();
+    return *exact_[i];
   }
 
   double approx_length(int a, int b) const {
@@ -204,6 +228,8 @@ class AdvancingFront {
   std::span<const ImplicitPoint> all_;
   std::vector<std::uint32_t> ids_;
   std::vector<std::array<double, 2>> approx_;
+  std::vector<std::uint64_t> lines_;  // bit k: on collinear set k
+  mutable std::vector<std::optional<geometry::ExactPoint>> exact_;
   std::map<Edge, double> front_;
   std::set<std::tuple<double, int, int>> queue_;  // shortest front edge first
 };

@@ -27,6 +27,10 @@ struct FaceToSplit {
   std::vector<std::uint32_t> interior;  // points strictly inside the face
   // Constraint segments not on the boundary, with no point strictly inside any of them.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> constraints;
+  // Sets of points collinear by construction (the points on one edge of the face, the
+  // points on one intersection segment): any three of a set have orient2d = 0, known
+  // without arithmetic (their exact evaluation is the expensive case of the filter).
+  std::vector<std::vector<std::uint32_t>> collinear_sets;
   Projection projection;
 };
 
@@ -40,9 +44,11 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
                         std::span<const geometry::ImplicitPoint> points);
 
 // Splits each segment at the points of `candidates` lying strictly inside it (exact
-// collinearity in `projection` and betweenness), returning the pieces.
+// collinearity in `projection` and betweenness), returning the pieces; each segment's
+// points (ends included) are appended to `collinear_sets`.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
     std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, std::span<const std::uint32_t> candidates,
-    const Projection& projection, std::span<const geometry::ImplicitPoint> points);
+    const Projection& projection, std::span<const geometry::ImplicitPoint> points,
+    std::vector<std::vector<std::uint32_t>>& collinear_sets);
 
 }  // namespace molsurf::boolean_engine

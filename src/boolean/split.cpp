@@ -32,7 +32,9 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
   face.interior = arr.face_points[f];
   std::vector<std::uint32_t> candidates = face.boundary;
   candidates.insert(candidates.end(), face.interior.begin(), face.interior.end());
-  const auto pieces = split_segments_at_points(arr.face_segments[f], candidates, face.projection, arr.points);
+  for (const auto& run : edge_run) face.collinear_sets.push_back(run);
+  const auto pieces =
+      split_segments_at_points(arr.face_segments[f], candidates, face.projection, arr.points, face.collinear_sets);
   for (auto [s, t] : pieces) {
     out.curve_pieces.emplace_back(s, t);
     bool on_boundary = false;

@@ -5,6 +5,7 @@
 #include <gmpxx.h>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace molsurf::boolean_engine {
 
@@ -114,16 +115,19 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> pair_faces_around_edge(
   return pairs;
 }
 
-// Duplicates every vertex whose faces form more than one fan. Faces are joined across an
-// edge with exactly two faces, or, where the solids touch along an edge, across the
-// material sectors found by pair_faces_around_edge.
-std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint32_t>& point_of_vertex,
-                                    const Arrangement& arr) {
-  Mesh& m = r.mesh;
-  const auto face_count = static_cast<std::uint32_t>(m.faces.size());
+using FacePairs = std::unordered_set<std::uint64_t>;  // (lower face, higher face) bound one sector
+
+std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_by_edge(const Mesh& m) {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_of_edge;
-  for (std::uint32_t f = 0; f < face_count; ++f)
+  for (std::uint32_t f = 0; f < m.faces.size(); ++f)
     for (int i = 0; i < 3; ++i) faces_of_edge[edge_key(m.faces[f][i], m.faces[f][(i + 1) % 3])].push_back(f);
+  return faces_of_edge;
+}
+
+// Duplicates every vertex whose faces form more than one fan. Faces are joined across an
+// edge with exactly two faces, and across an edge with more faces by the given pairs.
+std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs) {
+  const auto face_count = static_cast<std::uint32_t>(m.faces.size());
   // Corner slots: 3 per face; join slots of the same vertex across connecting edges.
   std::vector<std::uint32_t> parent(3 * face_count);
   std::iota(parent.begin(), parent.end(), 0u);
@@ -138,13 +142,15 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
       if (x != y) parent[std::max(x, y)] = std::min(x, y);
     }
   };
-  for (const auto& [key, faces] : faces_of_edge) {
+  for (const auto& [key, faces] : faces_by_edge(m)) {
     const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
     if (faces.size() == 2) {
       join(faces[0], faces[1], a, b);
-    } else if (faces.size() > 2) {
-      for (auto [f, g] : pair_faces_around_edge(m, point_of_vertex, arr, a, b, faces)) join(f, g, a, b);
+      continue;
     }
+    for (std::uint32_t f : faces)
+      for (std::uint32_t g : faces)
+        if (f < g && pairs.count(edge_key(f, g))) join(f, g, a, b);
   }
   // The first fan (lowest slot) of each vertex keeps it; every other fan gets a copy.
   std::unordered_map<std::uint32_t, std::uint32_t> first_fan_of_vertex;
@@ -162,6 +168,63 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
     }
     m.faces[s / 3][s % 3] = copy->second;
   }
+  return copies;
+}
+
+// Keeps the sheets apart where the solids touch. First, faces around each edge shared by
+// more than two faces are paired by material sector and vertices are duplicated per fan.
+// Where both ends of such an edge are places where the sheets join, no end can be
+// duplicated: the edge is then split at its midpoint (each half-face keeps its pairing),
+// and the midpoint, which the sheets do not share, is duplicated.
+std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint32_t>& point_of_vertex,
+                                    const Arrangement& arr) {
+  Mesh& m = r.mesh;
+  FacePairs pairs;
+  for (const auto& [key, faces] : faces_by_edge(m)) {
+    if (faces.size() <= 2) continue;
+    const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
+    for (auto [f, g] : pair_faces_around_edge(m, point_of_vertex, arr, a, b, faces)) pairs.insert(edge_key(f, g));
+  }
+  if (pairs.empty()) return duplicate_fan_vertices(m, pairs);
+  std::size_t copies = duplicate_fan_vertices(m, pairs);
+
+  std::vector<std::pair<std::uint64_t, std::vector<std::uint32_t>>> shared;
+  for (auto& [key, faces] : faces_by_edge(m))
+    if (faces.size() > 2) shared.emplace_back(key, std::move(faces));
+  std::sort(shared.begin(), shared.end());  // deterministic order of new vertices and faces
+  for (const auto& [key, faces] : shared) {
+    const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
+    const auto mid = static_cast<std::uint32_t>(m.vertices.size());
+    m.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
+    // Each face's half on a's side and on b's side (which is which depends on how the
+    // face runs along the edge); halves pair as their faces did.
+    std::unordered_map<std::uint32_t, std::uint32_t> half_at_a, half_at_b;
+    for (std::uint32_t f : faces) {
+      Triangle& t = m.faces[f];
+      int i = 0;  // t[i] -> t[i+1] is the edge
+      while (!((t[i] == a || t[i] == b) && (t[(i + 1) % 3] == a || t[(i + 1) % 3] == b))) ++i;
+      Triangle half = t;
+      const bool starts_at_a = t[i] == a;
+      t[(i + 1) % 3] = mid;  // (t[i], mid, w)
+      half[i] = mid;         // (mid, t[i+1], w)
+      const auto added = static_cast<std::uint32_t>(m.faces.size());
+      half_at_a[f] = starts_at_a ? f : added;
+      half_at_b[f] = starts_at_a ? added : f;
+      m.faces.push_back(half);
+      r.face_operand.push_back(r.face_operand[f]);
+      r.face_source.push_back(r.face_source[f]);
+      if (!m.face_tags.empty()) m.face_tags.push_back(m.face_tags[f]);
+    }
+    std::vector<std::uint64_t> halves_paired;
+    for (std::uint32_t f : faces)
+      for (std::uint32_t g : faces)
+        if (f < g && pairs.count(edge_key(f, g))) {
+          halves_paired.push_back(edge_key(half_at_a[f], half_at_a[g]));
+          halves_paired.push_back(edge_key(half_at_b[f], half_at_b[g]));
+        }
+    pairs.insert(halves_paired.begin(), halves_paired.end());
+  }
+  if (!shared.empty()) copies += duplicate_fan_vertices(m, pairs);
   return copies;
 }
 
