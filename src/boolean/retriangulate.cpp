@@ -1,6 +1,9 @@
 #include "boolean/retriangulate.hpp"
 
+#include "geometry/exact_integers.hpp"
+
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -22,7 +25,8 @@ int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int axis)
   const geometry::Interval &a = p.coordinate(axis), &b = q.coordinate(axis);
   if (a.hi < b.lo) return -1;
   if (b.hi < a.lo) return 1;
-  return cmp(p.exact()[axis], q.exact()[axis]);
+  const int e = geometry::common_exponent_of({&p, &q});
+  return geometry::compare_homogeneous(p.homogeneous(e), q.homogeneous(e), axis);
 }
 
 // Strictly between p and q on their common line (exactly collinear assumed): compare on
@@ -144,13 +148,17 @@ class AdvancingFront {
     const geometry::Interval filtered = (pb.coordinate(u) - pa.coordinate(u)) * (pc.coordinate(v) - pa.coordinate(v)) -
                                         (pb.coordinate(v) - pa.coordinate(v)) * (pc.coordinate(u) - pa.coordinate(u));
     if (const int s = filtered.certain_sign()) return s;
-    const geometry::ExactPoint &ea = exact(a), &eb = exact(b), &ec = exact(c);
-    return sgn(mpq_class((eb[u] - ea[u]) * (ec[v] - ea[v]) - (eb[v] - ea[v]) * (ec[u] - ea[u])));
+    return geometry::orient2d_homogeneous(exact(a), exact(b), exact(c), u, v);
   }
 
-  // Exact coordinates, built once per point of this face.
-  const geometry::ExactPoint& exact(int i) const {
-    if (!exact_[i]) exact_[i] = all_[ids_[i]].exact();
+  // Exact homogeneous coordinates at one exponent for the whole face, built once per point.
+  const geometry::HomogeneousPoint& exact(int i) const {
+    if (exponent_ == INT_MAX) {
+      int lowest = INT_MAX;
+      for (std::uint32_t id : ids_) lowest = std::min(lowest, geometry::common_exponent(all_[id].defining_values()));
+      exponent_ = lowest == INT_MAX ? 0 : lowest;
+    }
+    if (!exact_[i]) exact_[i] = all_[ids_[i]].homogeneous(exponent_);
     return *exact_[i];
   }
 
@@ -229,7 +237,8 @@ class AdvancingFront {
   std::vector<std::uint32_t> ids_;
   std::vector<std::array<double, 2>> approx_;
   std::vector<std::uint64_t> lines_;  // bit k: on collinear set k
-  mutable std::vector<std::optional<geometry::ExactPoint>> exact_;
+  mutable std::vector<std::optional<geometry::HomogeneousPoint>> exact_;
+  mutable int exponent_ = INT_MAX;
   std::map<Edge, double> front_;
   std::set<std::tuple<double, int, int>> queue_;  // shortest front edge first
 };

@@ -1,6 +1,10 @@
 #include "geometry/implicit_point.hpp"
 
+#include "geometry/exact_integers.hpp"
 #include "geometry/predicates.hpp"
+
+#include <algorithm>
+#include <climits>
 
 namespace molsurf::geometry {
 
@@ -52,6 +56,49 @@ ExactPoint ImplicitPoint::exact() const {
   return {p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2])};
 }
 
+std::span<const double> ImplicitPoint::defining_values() const {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  return {&def_[0].x, is_lpi_ ? std::size_t{15} : std::size_t{3}};
+}
+
+HomogeneousPoint ImplicitPoint::homogeneous(int exponent) const {
+  if (!is_lpi_) {
+    const IntVec v = scaled(def_[0], exponent);
+    return {v.x, v.y, v.z, 1};
+  }
+  // P = (q dp - p dq) / (dp - dq), dp = det[b-a, c-a, p-a], dq = det[b-a, c-a, q-a].
+  const IntVec p = scaled(def_[0], exponent), q = scaled(def_[1], exponent), a = scaled(def_[2], exponent);
+  const IntVec u = scaled(def_[3], exponent) - a, v = scaled(def_[4], exponent) - a;
+  const mpz_class dp = det3(u, v, p - a), dq = det3(u, v, q - a);
+  HomogeneousPoint h{q.x * dp - p.x * dq, q.y * dp - p.y * dq, q.z * dp - p.z * dq, dp - dq};
+  if (sgn(h.w) < 0) {
+    h.x = -h.x;
+    h.y = -h.y;
+    h.z = -h.z;
+    h.w = -h.w;
+  }
+  return h;
+}
+
+int common_exponent_of(std::initializer_list<const ImplicitPoint*> points) {
+  int lowest = INT_MAX;
+  for (const ImplicitPoint* p : points) lowest = std::min(lowest, common_exponent(p->defining_values()));
+  return lowest == INT_MAX ? 0 : lowest;
+}
+
+int orient2d_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, const HomogeneousPoint& c, int u,
+                         int v) {
+  // det [[a_u, a_v, a_w], [b_u, b_v, b_w], [c_u, c_v, c_w]]: orient2d of the projected
+  // points when every w is positive.
+  const mpz_class det = a[u] * (b[v] * c.w - b.w * c[v]) - a[v] * (b[u] * c.w - b.w * c[u]) +
+                        a.w * (b[u] * c[v] - b[v] * c[u]);
+  return sgn(det);
+}
+
+int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, int axis) {
+  return cmp(a[axis] * b.w, b[axis] * a.w);
+}
+
 Vec3 ImplicitPoint::rounded() const {
   if (!is_lpi_) return def_[0];
   const ExactPoint e = exact();
@@ -66,9 +113,8 @@ int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint
   const Interval filtered = (b.coordinate(u) - a.coordinate(u)) * (c.coordinate(v) - a.coordinate(v)) -
                             (b.coordinate(v) - a.coordinate(v)) * (c.coordinate(u) - a.coordinate(u));
   if (const int s = filtered.certain_sign()) return s;
-  const ExactPoint ea = a.exact(), eb = b.exact(), ec = c.exact();
-  const mpq_class det = (eb[u] - ea[u]) * (ec[v] - ea[v]) - (eb[v] - ea[v]) * (ec[u] - ea[u]);
-  return sgn(det);
+  const int e = common_exponent_of({&a, &b, &c});
+  return orient2d_homogeneous(a.homogeneous(e), b.homogeneous(e), c.homogeneous(e), u, v);
 }
 
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d) {
@@ -77,9 +123,13 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d
   const IVec id = {d.coordinate(0), d.coordinate(1), d.coordinate(2)};
   const Interval filtered = det3(sub(to_interval(b), ia), sub(to_interval(c), ia), sub(id, ia));
   if (const int s = filtered.certain_sign()) return s;
-  const ExactPoint e = d.exact();
-  const QVec qa = to_rational(a);
-  return sgn(det3(sub(to_rational(b), qa), sub(to_rational(c), qa), sub(QVec{e.x, e.y, e.z}, qa)));
+  // det[b-a, c-a, D/w - a] has the sign of det[b-a, c-a, D - a w] (w > 0).
+  const double abc[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z};
+  const int e = std::min(common_exponent(abc), common_exponent_of({&d}));
+  const HomogeneousPoint h = d.homogeneous(e);
+  const IntVec za = scaled(a, e);
+  const IntVec shifted{h.x - za.x * h.w, h.y - za.y * h.w, h.z - za.z * h.w};
+  return sgn(det3(scaled(b, e) - za, scaled(c, e) - za, shifted));
 }
 
 }  // namespace molsurf::geometry

@@ -6,12 +6,21 @@
 // first, and by exact GMP rationals when the interval cannot tell. The double
 // coordinates of an LPI point are only an output (rounded after every decision).
 #include <array>
+#include <initializer_list>
+#include <span>
 #include <gmpxx.h>
 
 #include "geometry/interval.hpp"
 #include "molsurf/vec3.hpp"
 
 namespace molsurf::geometry {
+
+// Homogeneous integer coordinates (x, y, z, w), w > 0, of a point scaled by 2^-e for a
+// common exponent e (see exact_integers.hpp): the exact path without fractions.
+struct HomogeneousPoint {
+  mpz_class x, y, z, w;
+  const mpz_class& operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+};
 
 struct ExactPoint {
   mpq_class x, y, z;
@@ -31,6 +40,10 @@ class ImplicitPoint {
   const Interval& coordinate(int axis) const { return box_[axis]; }
 
   ExactPoint exact() const;
+  // The defining doubles (3 for an explicit point, 15 for a crossing), for choosing a
+  // common exponent, and the homogeneous integer form scaled by 2^-exponent.
+  std::span<const double> defining_values() const;
+  HomogeneousPoint homogeneous(int exponent) const;
   // Within one ulp of the exact point in each coordinate (GMP truncates toward zero);
   // the input itself for explicit points.
   Vec3 rounded() const;
@@ -40,6 +53,14 @@ class ImplicitPoint {
   std::array<Interval, 3> box_{};
   bool is_lpi_ = false;
 };
+
+// The common exponent of the defining doubles of some points.
+int common_exponent_of(std::initializer_list<const ImplicitPoint*> points);
+
+// Exact signs on homogeneous points of one common exponent.
+int orient2d_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, const HomogeneousPoint& c, int u,
+                         int v);
+int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, int axis);
 
 // orient2d of three points projected on the coordinate plane (u, v), u, v in {0,1,2}:
 // sign of (b-a)_u (c-a)_v - (b-a)_v (c-a)_u.
