@@ -68,8 +68,7 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   stats.split_faces = split.split_faces;
   stats.seconds.split = timer.lap();
 
-  const Classification classes =
-      classify_sub_faces(operands, arrangement, split.sub_faces, split.intersection_edges);
+  const Classification classes = classify_sub_faces(operands, arrangement, split);
   stats.exact_ray_casts = classes.exact_ray_casts;
   stats.seconds.classify = timer.lap();
 

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "boolean/intersect.hpp"
+#include "boolean/split.hpp"
 #include "geometry/ray_parity.hpp"
 
 namespace molsurf::boolean_engine {
@@ -40,8 +41,9 @@ bool inside_partner(const Operands& ops, const Arrangement& arr, const SubFace& 
 
 }  // namespace
 
-Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, const std::vector<SubFace>& subs,
-                                  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& intersection_edges) {
+Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, const SplitResult& split) {
+  const std::vector<SubFace>& subs = split.sub_faces;
+  const auto& intersection_edges = split.intersection_edges;
   Classification result;
   const auto n = static_cast<std::uint32_t>(subs.size());
   result.side.assign(n, Side::outside);
@@ -61,17 +63,41 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   for (auto [a, b] : intersection_edges) curve.insert(edge_key(a, b));
   std::vector<std::uint32_t> parent(n);
   std::iota(parent.begin(), parent.end(), 0u);
-  std::unordered_map<std::uint64_t, std::uint32_t> first_on_edge[2];
-  for (std::uint32_t s = 0; s < n; ++s) {
+  auto unite = [&](std::uint32_t x, std::uint32_t y) {
+    const std::uint32_t r1 = find_root(parent, x), r2 = find_root(parent, y);
+    if (r1 != r2) parent[std::max(r1, r2)] = std::min(r1, r2);
+  };
+  // Pieces of cut faces meet along point-id edges: hash those (few). Whole faces meet
+  // their neighbours across input edges: the operands' edge table joins them directly.
+  std::unordered_map<std::uint64_t, std::uint32_t> piece_on_edge[2];
+  for (std::uint32_t f = 0; f < ops.face_count(); ++f) {
+    if (!split.cut[f]) continue;
+    const int operand = ops.operand_of_face(f);
+    for (std::uint32_t s = split.first_sub_face[f]; s < split.first_sub_face[f + 1]; ++s) {
+      if (coincident[s]) continue;
+      for (int i = 0; i < 3; ++i) {
+        const std::uint64_t key = edge_key(subs[s].points[i], subs[s].points[(i + 1) % 3]);
+        if (curve.count(key)) continue;
+        auto [it, inserted] = piece_on_edge[operand].try_emplace(key, s);
+        if (!inserted) unite(it->second, s);
+      }
+    }
+  }
+  for (std::uint32_t f = 0; f < ops.face_count(); ++f) {
+    if (split.cut[f]) continue;
+    const std::uint32_t s = split.first_sub_face[f];
     if (coincident[s]) continue;
-    const int operand = ops.operand_of_face(subs[s].face);
-    for (int i = 0; i < 3; ++i) {
-      const std::uint64_t key = edge_key(subs[s].points[i], subs[s].points[(i + 1) % 3]);
+    const int operand = ops.operand_of_face(f);
+    for (std::uint32_t e : ops.face_edges(f)) {
+      const auto& two = ops.edge_faces(e);
+      const std::uint32_t g = two[0] == f ? two[1] : two[0];
+      const auto& ends = ops.edge_vertices(e);
+      const std::uint64_t key = edge_key(arr.vertex_point[ends[0]], arr.vertex_point[ends[1]]);
       if (curve.count(key)) continue;
-      auto [it, inserted] = first_on_edge[operand].try_emplace(key, s);
-      if (!inserted) {
-        const std::uint32_t r1 = find_root(parent, it->second), r2 = find_root(parent, s);
-        if (r1 != r2) parent[std::max(r1, r2)] = std::min(r1, r2);
+      if (!split.cut[g]) {
+        if (f < g && !coincident[split.first_sub_face[g]]) unite(s, split.first_sub_face[g]);
+      } else if (auto it = piece_on_edge[operand].find(key); it != piece_on_edge[operand].end()) {
+        unite(s, it->second);
       }
     }
   }

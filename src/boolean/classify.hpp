@@ -27,9 +27,8 @@ struct Classification {
   std::size_t exact_ray_casts = 0;
 };
 
-// `intersection_edges`: point-id pairs (lower, higher) lying on intersection curves.
-Classification classify_sub_faces(const Operands& operands, const Arrangement& arrangement,
-                                  const std::vector<SubFace>& sub_faces,
-                                  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& intersection_edges);
+struct SplitResult;
+
+Classification classify_sub_faces(const Operands& operands, const Arrangement& arrangement, const SplitResult& split);
 
 }  // namespace molsurf::boolean_engine

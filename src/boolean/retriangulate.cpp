@@ -29,17 +29,6 @@ int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int axis)
   return geometry::compare_homogeneous(p.homogeneous(e), q.homogeneous(e), axis);
 }
 
-// Strictly between p and q on their common line (exactly collinear assumed): compare on
-// an axis along which p and q differ.
-bool strictly_between(const ImplicitPoint& p, const ImplicitPoint& x, const ImplicitPoint& q, const Projection& pr) {
-  for (int axis : {pr.u, pr.v}) {
-    const int pq = compare_coordinate(p, q, axis);
-    if (pq == 0) continue;
-    return compare_coordinate(p, x, axis) == pq && compare_coordinate(x, q, axis) == pq;
-  }
-  return false;
-}
-
 }  // namespace
 
 void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const Vec3& to,
@@ -55,37 +44,79 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
   });
 }
 
+FacePoints::FacePoints(std::vector<std::uint32_t> ids, std::span<const ImplicitPoint> all, Projection projection)
+    : ids_(std::move(ids)), all_(all), projection_(projection), exact_(ids_.size()), exponent_(INT_MAX) {
+  for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local_.emplace(ids_[i], i);
+}
+
+const geometry::HomogeneousPoint& FacePoints::exact(int i) const {
+  if (exponent_ == INT_MAX) {
+    int lowest = INT_MAX;
+    for (std::uint32_t id : ids_) lowest = std::min(lowest, geometry::common_exponent(all_[id].defining_values()));
+    exponent_ = lowest == INT_MAX ? 0 : lowest;
+  }
+  if (!exact_[i]) exact_[i] = point(i).homogeneous(exponent_);
+  return *exact_[i];
+}
+
+int FacePoints::orient(int a, int b, int c) const {
+  const ImplicitPoint &pa = point(a), &pb = point(b), &pc = point(c);
+  const int u = projection_.u, v = projection_.v;
+  if (pa.is_explicit() && pb.is_explicit() && pc.is_explicit()) return geometry::orient2d(pa, pb, pc, u, v);
+  const geometry::Interval filtered = (pb.coordinate(u) - pa.coordinate(u)) * (pc.coordinate(v) - pa.coordinate(v)) -
+                                      (pb.coordinate(v) - pa.coordinate(v)) * (pc.coordinate(u) - pa.coordinate(u));
+  if (const int s = filtered.certain_sign()) return s;
+  return geometry::orient2d_homogeneous(exact(a), exact(b), exact(c), u, v);
+}
+
+int FacePoints::compare(int a, int b, int axis) const {
+  const geometry::Interval &x = point(a).coordinate(axis), &y = point(b).coordinate(axis);
+  if (x.hi < y.lo) return -1;
+  if (y.hi < x.lo) return 1;
+  return geometry::compare_homogeneous(exact(a), exact(b), axis);
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
-    std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, std::span<const std::uint32_t> candidates,
-    const Projection& pr, std::span<const ImplicitPoint> points,
+    std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, const FacePoints& points,
     std::vector<std::vector<std::uint32_t>>& collinear_sets) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces;
-  for (auto [s, t] : segments) {
-    std::vector<std::uint32_t> inside;
-    for (std::uint32_t c : candidates) {
-      if (c == s || c == t) continue;
-      if (geometry::orient2d(points[s], points[t], points[c], pr.u, pr.v) != 0) continue;
-      if (strictly_between(points[s], points[c], points[t], pr)) inside.push_back(c);
+  const Projection& pr = points.projection();
+  auto strictly_between = [&](int p, int x, int q) {  // on the common line of p, x, q
+    for (int axis : {pr.u, pr.v}) {
+      const int pq = points.compare(p, q, axis);
+      if (pq == 0) continue;
+      return points.compare(p, x, axis) == pq && points.compare(x, q, axis) == pq;
     }
-    collinear_sets.push_back(inside);
-    collinear_sets.back().push_back(s);
-    collinear_sets.back().push_back(t);
+    return false;
+  };
+  const int n = static_cast<int>(points.ids().size());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces;
+  for (auto [s_id, t_id] : segments) {
+    const int s = points.local(s_id), t = points.local(t_id);
+    std::vector<int> inside;
+    for (int c = 0; c < n; ++c) {
+      if (c == s || c == t) continue;
+      if (points.orient(s, t, c) != 0) continue;
+      if (strictly_between(s, c, t)) inside.push_back(c);
+    }
+    std::vector<std::uint32_t>& line = collinear_sets.emplace_back();
+    for (int c : inside) line.push_back(points.ids()[c]);
+    line.push_back(s_id);
+    line.push_back(t_id);
     if (inside.empty()) {
-      pieces.emplace_back(s, t);
+      pieces.emplace_back(s_id, t_id);
       continue;
     }
     // Order along s -> t on an axis where they differ.
-    const int axis = compare_coordinate(points[s], points[t], pr.u) != 0 ? pr.u : pr.v;
-    const int direction = compare_coordinate(points[s], points[t], axis);
-    std::sort(inside.begin(), inside.end(), [&](std::uint32_t i, std::uint32_t j) {
-      return compare_coordinate(points[i], points[j], axis) == direction;
-    });
-    std::uint32_t previous = s;
-    for (std::uint32_t c : inside) {
-      pieces.emplace_back(std::min(previous, c), std::max(previous, c));
-      previous = c;
+    const int axis = points.compare(s, t, pr.u) != 0 ? pr.u : pr.v;
+    const int direction = points.compare(s, t, axis);
+    std::sort(inside.begin(), inside.end(), [&](int i, int j) { return points.compare(i, j, axis) == direction; });
+    std::uint32_t previous = s_id;
+    for (int c : inside) {
+      const std::uint32_t id = points.ids()[c];
+      pieces.emplace_back(std::min(previous, id), std::max(previous, id));
+      previous = id;
     }
-    pieces.emplace_back(std::min(previous, t), std::max(previous, t));
+    pieces.emplace_back(std::min(previous, t_id), std::max(previous, t_id));
   }
   std::sort(pieces.begin(), pieces.end());
   pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
@@ -96,24 +127,19 @@ namespace {
 
 class AdvancingFront {
  public:
-  AdvancingFront(const FaceToSplit& face, std::span<const ImplicitPoint> points) : face_(face), all_(points) {
-    ids_ = face.boundary;
-    ids_.insert(ids_.end(), face.interior.begin(), face.interior.end());
-    for (std::uint32_t id : ids_) {
-      const ImplicitPoint& p = all_[id];
+  AdvancingFront(const FaceToSplit& face, const FacePoints& points) : face_(face), points_(points) {
+    const int n = static_cast<int>(points.ids().size());
+    for (int i = 0; i < n; ++i) {
+      const ImplicitPoint& p = points.point(i);
       approx_.push_back({p.coordinate(face.projection.u).mid(), p.coordinate(face.projection.v).mid()});
     }
-    std::unordered_map<std::uint32_t, int> local;
-    for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local.emplace(ids_[i], i);
-    lines_.assign(ids_.size(), 0);
-    exact_.resize(ids_.size());
+    lines_.assign(n, 0);
     for (std::size_t k = 0; k < face.collinear_sets.size() && k < 64; ++k)
-      for (std::uint32_t id : face.collinear_sets[k])
-        if (auto it = local.find(id); it != local.end()) lines_[it->second] |= std::uint64_t{1} << k;
+      for (std::uint32_t id : face.collinear_sets[k]) lines_[points.local(id)] |= std::uint64_t{1} << k;
     const int nb = static_cast<int>(face.boundary.size());
-    for (int i = 0; i < nb; ++i) add_edge(i, (i + 1) % nb);
+    for (int i = 0; i < nb; ++i) add_edge(points.local(face.boundary[i]), points.local(face.boundary[(i + 1) % nb]));
     for (auto [s, t] : face.constraints) {
-      const int a = local.at(s), b = local.at(t);
+      const int a = points.local(s), b = points.local(t);
       add_edge(a, b);
       add_edge(b, a);
     }
@@ -121,14 +147,15 @@ class AdvancingFront {
 
   std::vector<std::array<std::uint32_t, 3>> run() {
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    const std::size_t limit = 4 * ids_.size() + 4 * face_.constraints.size() + 16;
+    const std::size_t limit = 4 * points_.ids().size() + 4 * face_.constraints.size() + 16;
     while (!queue_.empty()) {
       const auto [length, a, b] = *queue_.begin();
       const int p = best_apex(a, b);
       if (p < 0)
         throw std::logic_error("boolean: the advancing front found no valid triangle on a front edge (" +
-                               std::to_string(ids_.size()) + " points)");
-      triangles.push_back({ids_[a], ids_[b], ids_[p]});
+                               std::to_string(points_.ids().size()) + " points)");
+      const auto& ids = points_.ids();
+      triangles.push_back({ids[a], ids[b], ids[p]});
       if (triangles.size() > limit) throw std::logic_error("boolean: the advancing front does not terminate");
       remove_edge(a, b);
       close_or_open(b, p);
@@ -142,24 +169,7 @@ class AdvancingFront {
 
   int orient(int a, int b, int c) const {
     if (lines_[a] & lines_[b] & lines_[c]) return 0;  // collinear by construction
-    const ImplicitPoint &pa = all_[ids_[a]], &pb = all_[ids_[b]], &pc = all_[ids_[c]];
-    const int u = face_.projection.u, v = face_.projection.v;
-    if (pa.is_explicit() && pb.is_explicit() && pc.is_explicit()) return geometry::orient2d(pa, pb, pc, u, v);
-    const geometry::Interval filtered = (pb.coordinate(u) - pa.coordinate(u)) * (pc.coordinate(v) - pa.coordinate(v)) -
-                                        (pb.coordinate(v) - pa.coordinate(v)) * (pc.coordinate(u) - pa.coordinate(u));
-    if (const int s = filtered.certain_sign()) return s;
-    return geometry::orient2d_homogeneous(exact(a), exact(b), exact(c), u, v);
-  }
-
-  // Exact homogeneous coordinates at one exponent for the whole face, built once per point.
-  const geometry::HomogeneousPoint& exact(int i) const {
-    if (exponent_ == INT_MAX) {
-      int lowest = INT_MAX;
-      for (std::uint32_t id : ids_) lowest = std::min(lowest, geometry::common_exponent(all_[id].defining_values()));
-      exponent_ = lowest == INT_MAX ? 0 : lowest;
-    }
-    if (!exact_[i]) exact_[i] = all_[ids_[i]].homogeneous(exponent_);
-    return *exact_[i];
+    return points_.orient(a, b, c);
   }
 
   double approx_length(int a, int b) const {
@@ -206,7 +216,7 @@ class AdvancingFront {
   }
 
   bool valid_triangle(int a, int b, int p) const {
-    const int n = static_cast<int>(ids_.size());
+    const int n = static_cast<int>(points_.ids().size());
     for (int q = 0; q < n; ++q) {
       if (q == a || q == b || q == p) continue;
       if (orient(a, b, q) >= 0 && orient(b, p, q) >= 0 && orient(p, a, q) >= 0) return false;
@@ -223,7 +233,7 @@ class AdvancingFront {
 
   int best_apex(int a, int b) const {
     std::vector<std::pair<double, int>> candidates;
-    const int n = static_cast<int>(ids_.size());
+    const int n = static_cast<int>(points_.ids().size());
     for (int p = 0; p < n; ++p)
       if (p != a && p != b && orient(a, b, p) > 0) candidates.emplace_back(delaunay_offset(a, b, p), p);
     std::sort(candidates.begin(), candidates.end());
@@ -233,20 +243,16 @@ class AdvancingFront {
   }
 
   const FaceToSplit& face_;
-  std::span<const ImplicitPoint> all_;
-  std::vector<std::uint32_t> ids_;
+  const FacePoints& points_;
   std::vector<std::array<double, 2>> approx_;
   std::vector<std::uint64_t> lines_;  // bit k: on collinear set k
-  mutable std::vector<std::optional<geometry::HomogeneousPoint>> exact_;
-  mutable int exponent_ = INT_MAX;
   std::map<Edge, double> front_;
   std::set<std::tuple<double, int, int>> queue_;  // shortest front edge first
 };
 
 }  // namespace
 
-std::vector<std::array<std::uint32_t, 3>> retriangulate_face(const FaceToSplit& face,
-                                                             std::span<const ImplicitPoint> points) {
+std::vector<std::array<std::uint32_t, 3>> retriangulate_face(const FaceToSplit& face, const FacePoints& points) {
   return AdvancingFront(face, points).run();
 }
 

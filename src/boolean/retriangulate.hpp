@@ -10,6 +10,8 @@
 // and its new edges cross no front edge. The Delaunay choice only orders the candidates
 // (floating point on the points' approximations), so it affects quality, never validity.
 #include <array>
+#include <optional>
+#include <unordered_map>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -34,21 +36,44 @@ struct FaceToSplit {
   Projection projection;
 };
 
+// The points of one face with exact predicates in its projection: the interval filter
+// first, then integer homogeneous coordinates at one exponent for the whole face, each
+// built once (points are shared by several predicates, and their exact form is costly).
+class FacePoints {
+ public:
+  FacePoints(std::vector<std::uint32_t> ids, std::span<const geometry::ImplicitPoint> all, Projection projection);
+  const std::vector<std::uint32_t>& ids() const { return ids_; }
+  int local(std::uint32_t id) const { return local_.at(id); }
+  const geometry::ImplicitPoint& point(int i) const { return all_[ids_[i]]; }
+  const Projection& projection() const { return projection_; }
+  int orient(int a, int b, int c) const;       // local indices
+  int compare(int a, int b, int axis) const;   // exact order of one coordinate
+
+ private:
+  const geometry::HomogeneousPoint& exact(int i) const;
+
+  std::vector<std::uint32_t> ids_;
+  std::span<const geometry::ImplicitPoint> all_;
+  Projection projection_;
+  std::unordered_map<std::uint32_t, int> local_;
+  mutable std::vector<std::optional<geometry::HomogeneousPoint>> exact_;
+  mutable int exponent_;
+};
+
 // Triangles (point ids) counter-clockwise in the projection, i.e. oriented as the face.
-// Throws std::logic_error if the front cannot advance (a broken precondition).
-std::vector<std::array<std::uint32_t, 3>> retriangulate_face(const FaceToSplit& face,
-                                                             std::span<const geometry::ImplicitPoint> points);
+// `points` holds the face's boundary and interior points. Throws std::logic_error if the
+// front cannot advance (a broken precondition).
+std::vector<std::array<std::uint32_t, 3>> retriangulate_face(const FaceToSplit& face, const FacePoints& points);
 
 // Sorts `ids` (points strictly inside the segment from -> to) along it, exactly.
 void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const Vec3& to,
                         std::span<const geometry::ImplicitPoint> points);
 
-// Splits each segment at the points of `candidates` lying strictly inside it (exact
+// Splits each segment at the face's points lying strictly inside it (exact
 // collinearity in `projection` and betweenness), returning the pieces; each segment's
 // points (ends included) are appended to `collinear_sets`.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
-    std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, std::span<const std::uint32_t> candidates,
-    const Projection& projection, std::span<const geometry::ImplicitPoint> points,
+    std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, const FacePoints& points,
     std::vector<std::vector<std::uint32_t>>& collinear_sets);
 
 }  // namespace molsurf::boolean_engine

@@ -30,11 +30,11 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
     face.boundary.insert(face.boundary.end(), inside.begin(), inside.end());
   }
   face.interior = arr.face_points[f];
-  std::vector<std::uint32_t> candidates = face.boundary;
-  candidates.insert(candidates.end(), face.interior.begin(), face.interior.end());
+  std::vector<std::uint32_t> ids = face.boundary;
+  ids.insert(ids.end(), face.interior.begin(), face.interior.end());
+  const FacePoints points(std::move(ids), arr.points, face.projection);
   for (const auto& run : edge_run) face.collinear_sets.push_back(run);
-  const auto pieces =
-      split_segments_at_points(arr.face_segments[f], candidates, face.projection, arr.points, face.collinear_sets);
+  const auto pieces = split_segments_at_points(arr.face_segments[f], points, face.collinear_sets);
   for (auto [s, t] : pieces) {
     out.curve_pieces.emplace_back(s, t);
     bool on_boundary = false;
@@ -43,7 +43,7 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
         on_boundary = true;
     if (!on_boundary) face.constraints.emplace_back(s, t);
   }
-  for (const auto& tri : retriangulate_face(face, arr.points)) out.sub_faces.push_back({tri, f});
+  for (const auto& tri : retriangulate_face(face, points)) out.sub_faces.push_back({tri, f});
   return out;
 }
 
@@ -61,9 +61,13 @@ SplitResult split_faces(const Operands& ops, const Arrangement& arr) {
 
   SplitResult result;
   result.split_faces = cut.size();
+  result.first_sub_face.reserve(face_count + 1);
+  result.cut.assign(face_count, 0);
   std::size_t next_cut = 0;
   for (std::uint32_t f = 0; f < face_count; ++f) {
+    result.first_sub_face.push_back(static_cast<std::uint32_t>(result.sub_faces.size()));
     if (next_cut < cut.size() && cut[next_cut] == f) {
+      result.cut[f] = 1;
       FaceSplit& p = pieces[next_cut++];
       result.sub_faces.insert(result.sub_faces.end(), p.sub_faces.begin(), p.sub_faces.end());
       result.intersection_edges.insert(result.intersection_edges.end(), p.curve_pieces.begin(), p.curve_pieces.end());
@@ -72,6 +76,7 @@ SplitResult split_faces(const Operands& ops, const Arrangement& arr) {
     const auto& c = ops.face(f);
     result.sub_faces.push_back({{arr.vertex_point[c[0]], arr.vertex_point[c[1]], arr.vertex_point[c[2]]}, f});
   }
+  result.first_sub_face.push_back(static_cast<std::uint32_t>(result.sub_faces.size()));
   std::sort(result.intersection_edges.begin(), result.intersection_edges.end());
   result.intersection_edges.erase(std::unique(result.intersection_edges.begin(), result.intersection_edges.end()),
                                   result.intersection_edges.end());

@@ -13,6 +13,9 @@ namespace molsurf::boolean_engine {
 
 struct SplitResult {
   std::vector<SubFace> sub_faces;  // in order of source face
+  // Sub-faces of face f: [first_sub_face[f], first_sub_face[f + 1]); cut[f]: re-triangulated.
+  std::vector<std::uint32_t> first_sub_face;
+  std::vector<std::uint8_t> cut;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> intersection_edges;  // (lower, higher) point ids
   std::size_t split_faces = 0;
 };

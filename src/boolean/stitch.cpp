@@ -117,24 +117,30 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> pair_faces_around_edge(
 
 using FacePairs = std::unordered_set<std::uint64_t>;  // (lower face, higher face) bound one sector
 
-std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_by_edge(const Mesh& m) {
+std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_by_edge(const Mesh& m,
+                                                                            const std::vector<std::uint32_t>& faces) {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_of_edge;
-  for (std::uint32_t f = 0; f < m.faces.size(); ++f)
+  for (std::uint32_t f : faces)
     for (int i = 0; i < 3; ++i) faces_of_edge[edge_key(m.faces[f][i], m.faces[f][(i + 1) % 3])].push_back(f);
   return faces_of_edge;
 }
 
-// Duplicates every vertex whose faces form more than one fan. Faces are joined across an
-// edge with exactly two faces, and across an edge with more faces by the given pairs.
-std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs) {
-  const auto face_count = static_cast<std::uint32_t>(m.faces.size());
-  // Corner slots: 3 per face; join slots of the same vertex across connecting edges.
-  std::vector<std::uint32_t> parent(3 * face_count);
+// Duplicates every vertex of `faces` allowed by `may_split` whose faces form more than one
+// fan; `faces` must hold every face around each such vertex. Faces are joined across an edge with
+// exactly two faces, and across an edge with more faces by the given pairs.
+template <class MaySplit>
+std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::vector<std::uint32_t>& faces,
+                                   MaySplit&& may_split) {
+  // Corner slots: 3 per listed face; join slots of the same vertex across connecting edges.
+  std::unordered_map<std::uint32_t, std::uint32_t> slot_base;
+  for (std::uint32_t k = 0; k < faces.size(); ++k) slot_base.emplace(faces[k], 3 * k);
+  std::vector<std::uint32_t> parent(3 * faces.size());
   std::iota(parent.begin(), parent.end(), 0u);
   auto slot = [&](std::uint32_t f, std::uint32_t v) {
+    const std::uint32_t base = slot_base.at(f);
     for (std::uint32_t i = 0; i < 3; ++i)
-      if (m.faces[f][i] == v) return 3 * f + i;
-    return 3 * f;
+      if (m.faces[f][i] == v) return base + i;
+    return base;
   };
   auto join = [&](std::uint32_t f, std::uint32_t g, std::uint32_t a, std::uint32_t b) {
     for (std::uint32_t v : {a, b}) {
@@ -142,22 +148,24 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs) {
       if (x != y) parent[std::max(x, y)] = std::min(x, y);
     }
   };
-  for (const auto& [key, faces] : faces_by_edge(m)) {
+  for (const auto& [key, around] : faces_by_edge(m, faces)) {
     const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
-    if (faces.size() == 2) {
-      join(faces[0], faces[1], a, b);
+    if (around.size() == 2) {
+      join(around[0], around[1], a, b);
       continue;
     }
-    for (std::uint32_t f : faces)
-      for (std::uint32_t g : faces)
+    for (std::uint32_t f : around)
+      for (std::uint32_t g : around)
         if (f < g && pairs.count(edge_key(f, g))) join(f, g, a, b);
   }
   // The first fan (lowest slot) of each vertex keeps it; every other fan gets a copy.
   std::unordered_map<std::uint32_t, std::uint32_t> first_fan_of_vertex;
   std::unordered_map<std::uint32_t, std::uint32_t> copy_of_fan;
   std::size_t copies = 0;
-  for (std::uint32_t s = 0; s < 3 * face_count; ++s) {
-    const std::uint32_t v = m.faces[s / 3][s % 3];
+  for (std::uint32_t s = 0; s < 3 * faces.size(); ++s) {
+    Triangle& t = m.faces[faces[s / 3]];
+    const std::uint32_t v = t[s % 3];
+    if (!may_split(v)) continue;
     const std::uint32_t fan = find_root(parent, s);
     auto [it, first] = first_fan_of_vertex.try_emplace(v, fan);
     if (first || it->second == fan) continue;
@@ -166,7 +174,7 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs) {
       m.vertices.push_back(m.vertices[v]);
       ++copies;
     }
-    m.faces[s / 3][s % 3] = copy->second;
+    t[s % 3] = copy->second;
   }
   return copies;
 }
@@ -179,17 +187,29 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs) {
 std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint32_t>& point_of_vertex,
                                     const Arrangement& arr) {
   Mesh& m = r.mesh;
+  // Sheets can only touch at points on both surfaces: look at the faces around them only.
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t f = 0; f < m.faces.size(); ++f)
+    for (std::uint32_t v : m.faces[f])
+      if (arr.on_both_surfaces[point_of_vertex[v]]) {
+        near.push_back(f);
+        break;
+      }
   FacePairs pairs;
-  for (const auto& [key, faces] : faces_by_edge(m)) {
+  for (const auto& [key, faces] : faces_by_edge(m, near)) {
     if (faces.size() <= 2) continue;
     const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
     for (auto [f, g] : pair_faces_around_edge(m, point_of_vertex, arr, a, b, faces)) pairs.insert(edge_key(f, g));
   }
-  if (pairs.empty()) return duplicate_fan_vertices(m, pairs);
-  std::size_t copies = duplicate_fan_vertices(m, pairs);
+  const std::size_t original_vertices = point_of_vertex.size();
+  auto may_split = [&](std::uint32_t v) {  // on both surfaces, or a midpoint added below
+    return v >= original_vertices || arr.on_both_surfaces[point_of_vertex[v]];
+  };
+  std::size_t copies = duplicate_fan_vertices(m, pairs, near, may_split);
+  if (pairs.empty()) return copies;
 
   std::vector<std::pair<std::uint64_t, std::vector<std::uint32_t>>> shared;
-  for (auto& [key, faces] : faces_by_edge(m))
+  for (auto& [key, faces] : faces_by_edge(m, near))
     if (faces.size() > 2) shared.emplace_back(key, std::move(faces));
   std::sort(shared.begin(), shared.end());  // deterministic order of new vertices and faces
   for (const auto& [key, faces] : shared) {
@@ -208,6 +228,7 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
       t[(i + 1) % 3] = mid;  // (t[i], mid, w)
       half[i] = mid;         // (mid, t[i+1], w)
       const auto added = static_cast<std::uint32_t>(m.faces.size());
+      near.push_back(added);
       half_at_a[f] = starts_at_a ? f : added;
       half_at_b[f] = starts_at_a ? added : f;
       m.faces.push_back(half);
@@ -224,7 +245,7 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
         }
     pairs.insert(halves_paired.begin(), halves_paired.end());
   }
-  if (!shared.empty()) copies += duplicate_fan_vertices(m, pairs);
+  if (!shared.empty()) copies += duplicate_fan_vertices(m, pairs, near, may_split);
   return copies;
 }
 
