@@ -1,6 +1,8 @@
 // End-to-end: the molsurf command as a user runs it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cli_runner.hpp"
 #include "mesh_fixtures.hpp"
 #include "molsurf/icosphere.hpp"
@@ -36,23 +38,51 @@ TEST(Cli, VersionIsPrinted) {
   EXPECT_NE(r.out.find(MOLSURF_VERSION), std::string::npos);
 }
 
-TEST(Cli, StructureSummaryOfHaemoglobin) {
+TEST(Cli, SurfaceOfCrambinWithReports) {
   TempDir dir;
-  const auto r = run_molsurf("'" + kData + "/pdb/2hhb.pdb'", dir.path());
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("4558 kept"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("221 water"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("FE 4"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("no surface was written"), std::string::npos) << r.out;
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "2hhb.vtp"));
+  const auto r = run_molsurf("--per-atom atoms.csv --per-residue residues.csv --json report.json '" + kData +
+                                 "/pdb/1crn.pdb'",
+                             dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("327 kept"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("valid: closed"), std::string::npos) << r.out;
+  ASSERT_TRUE(std::filesystem::exists(dir.path() / "1crn.vtp"));  // STEM.vtp where it is run
+  const auto check = run_molsurf("check 1crn.vtp", dir.path());
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  const std::string atoms = testing::read_text(dir.path() / "atoms.csv");
+  EXPECT_EQ(std::count(atoms.begin(), atoms.end(), '\n'), 1 + 327);
+  const std::string residues = testing::read_text(dir.path() / "residues.csv");
+  EXPECT_EQ(std::count(residues.begin(), residues.end(), '\n'), 1 + 46);
+  const std::string json = testing::read_text(dir.path() / "report.json");
+  EXPECT_NE(json.find("\"valid\": true"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"cavity\""), std::string::npos) << json;
+}
+
+TEST(Cli, ThreadCountDoesNotChangeTheOutput) {
+  TempDir dir;
+  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
+  EXPECT_EQ(run_molsurf("-q --threads 1 -o one.ply " + input, dir.path()).exit_code, 0);
+  EXPECT_EQ(run_molsurf("-q --threads 2 -o two.ply " + input, dir.path()).exit_code, 0);
+  const std::string one = testing::read_text(dir.path() / "one.ply"), two = testing::read_text(dir.path() / "two.ply");
+  EXPECT_GT(one.size(), 1000u);
+  EXPECT_TRUE(one == two);
+}
+
+TEST(Cli, OuterOnlyAndMsmsOutput) {
+  TempDir dir;
+  const auto r = run_molsurf("--outer-only -o crambin.vert '" + kData + "/pdb/1crn.pdb'", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 outer, 0 cavities"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "crambin.vert"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "crambin.face"));
 }
 
 TEST(Cli, SelectionOptionsReachTheReader) {
   TempDir dir;
-  const auto r = run_molsurf("--chains A --no-hetatm '" + kData + "/pdb/2hhb.pdb'", dir.path());
+  const auto r = run_molsurf("--chains A --no-hetatm --density 0.5 -o a.off '" + kData + "/pdb/2hhb.pdb'", dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("other chains"), std::string::npos) << r.out;
-  EXPECT_EQ(r.out.find("4558 kept"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1069 kept"), std::string::npos) << r.out;
 }
 
 TEST(Cli, MissingStructureIsAClearError) {

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <functional>
 #include <span>
 
 #include "molsurf/atoms.hpp"
@@ -29,5 +30,31 @@ struct SpherePlan {
   double min_radius = 0, max_radius = 0;
 };
 SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& options);
+
+// The solvent-accessible surface: the union of all atoms' spheres, by hierarchical pairwise
+// mesh union. Atoms are ordered along a Morton (Z-order) curve of their centres, so
+// neighbours in the order are neighbours in space; each level of the merge tree joins
+// consecutive pairs of the level below, the merges of a level in parallel (OpenMP), and a
+// merge frees its operands. Spheres are built when their first merge runs. The result
+// does not depend on the number of threads.
+struct SurfaceOptions {
+  SphereOptions spheres;
+  int threads = 0;  // 0: all cores
+  // Called after each level with (merges done, merges in all); may be empty.
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+struct SurfaceTimings {  // seconds
+  double union_levels = 0;
+  double total = 0;
+};
+
+struct SurfaceResult {
+  Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
+  std::size_t merges = 0, levels = 0;
+  SurfaceTimings seconds;
+};
+
+SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options);
 
 }  // namespace molsurf

@@ -1,5 +1,7 @@
 #include "boolean/stitch.hpp"
 
+#include "boolean/repair_rounding.hpp"
+
 #include <algorithm>
 #include <array>
 #include <gmpxx.h>
@@ -277,7 +279,21 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
     r.face_source.push_back(source);
     if (tagged) r.mesh.face_tags.push_back(ops.mesh(operand).tag(source));
   }
+  repair_rounding(r.mesh, r.face_operand, r.face_source);
   r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
+  // Collapses leave vertices no face uses: renumber in order of first use.
+  std::vector<Index> renumber(r.mesh.vertices.size(), ~Index{0});
+  std::vector<Vec3> used;
+  used.reserve(r.mesh.vertices.size());
+  for (Triangle& t : r.mesh.faces)
+    for (Index& v : t) {
+      if (renumber[v] == ~Index{0}) {
+        renumber[v] = static_cast<Index>(used.size());
+        used.push_back(r.mesh.vertices[v]);
+      }
+      v = renumber[v];
+    }
+  r.mesh.vertices = std::move(used);
   return r;
 }
 

@@ -16,6 +16,10 @@ struct SurfaceCommand {
   ReadOptions read;
   std::string chains;
   SphereOptions spheres;
+  int threads = 0;
+  bool outer_only = false;
+  bool skip_check = false;
+  std::filesystem::path json, per_atom, per_residue;
   bool quiet = false;
 
   void add_options(CLI::App& app);

@@ -1,9 +1,17 @@
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 
 #include "cli/commands.hpp"
 #include "molsurf/io.hpp"
+#include "molsurf/mesh_check.hpp"
 #include "molsurf/report.hpp"
+#include "molsurf/surface_report.hpp"
+#include "io/atomic_file.hpp"
 
 namespace molsurf::cli {
 
@@ -54,8 +62,48 @@ void SurfaceCommand::add_options(CLI::App& app) {
                "Scale each icosphere so its area equals the true sphere's (default: vertices on the sphere)")
       ->group(sphere);
 
+  auto* output_group = "Output and reports";
+  app.add_flag("--outer-only", outer_only, "Keep the outer surface only, without cavities (as MSMS does by default)")
+      ->group(output_group);
+  app.add_option("--json", json, "Write the report as JSON to this file")->group(output_group);
+  app.add_option("--per-atom", per_atom, "Write each atom's area (A^2) to this CSV file")->group(output_group);
+  app.add_option("--per-residue", per_residue, "Write each residue's area (A^2) to this CSV file")
+      ->group(output_group);
+  app.add_flag("--no-check", skip_check, "Do not re-check the written surface (closed, manifold, no self-intersection)")
+      ->group(output_group);
+  app.add_option("--threads", threads, "Threads for the union (default: all cores); the result does not depend on it")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
 }
+
+namespace {
+
+// A one-line progress bar on stderr, drawn only when stderr is a terminal.
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
+  ~ProgressBar() {
+    if (drawn_) std::fprintf(stderr, "\r%60s\r", "");
+  }
+  void update(std::size_t done, std::size_t total) {
+    if (!enabled_ || total == 0) return;
+    const int width = 30, filled = static_cast<int>(width * done / total);
+    std::fprintf(stderr, "\runion  [%s%s] %zu/%zu merges", std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), done, total);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+
+ private:
+  bool enabled_;
+  bool drawn_ = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 int SurfaceCommand::run() const {
   std::filesystem::path out = output;
@@ -71,12 +119,60 @@ int SurfaceCommand::run() const {
   for (std::string chain; std::getline(list, chain, ',');)
     if (!chain.empty()) options.chains.push_back(chain);
 
+  SurfaceReport report;
+  auto clock = std::chrono::steady_clock::now();
   const Structure s = read_structure(structure, options);
+  report.seconds.read = seconds_since(clock);
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
-  if (!quiet) {
-    std::cout << format_read_report(s.report) << format_sphere_plan(plan, spheres);
-    std::cout << "\nmolsurf: the union engine is not built yet, so no surface was written (" << out.string()
-              << " would be next).\n";
+  if (!quiet) std::cout << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
+
+  clock = std::chrono::steady_clock::now();
+  ProgressBar bar(!quiet);
+  SurfaceOptions surface_options;
+  surface_options.spheres = spheres;
+  surface_options.threads = threads;
+  surface_options.progress = [&](std::size_t done, std::size_t total) { bar.update(done, total); };
+  SurfaceResult sas = solvent_accessible_surface(s.atoms, surface_options);
+  Mesh surface = outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
+  report.seconds.surface = seconds_since(clock);
+
+  clock = std::chrono::steady_clock::now();
+  MeshCheckOptions check_options;
+  check_options.self_intersections = !skip_check;
+  const MeshCheck check = check_mesh(surface, check_options);
+  report.seconds.check = seconds_since(clock);
+
+  clock = std::chrono::steady_clock::now();
+  MeshWriteOptions write_options;
+  write_options.atoms = s.atoms;
+  write_options.probe_radius = spheres.probe;
+  write_options.density = spheres.density;
+  write_mesh(out, surface, write_options);
+  const std::vector<double> atom_area = area_per_atom(surface, s.atoms.size());
+  if (!per_atom.empty()) write_per_atom_csv(per_atom, s.atoms, atom_area);
+  if (!per_residue.empty()) write_per_residue_csv(per_residue, s.atoms, atom_area);
+  report.seconds.write = seconds_since(clock);
+
+  const SurfaceReport measured = make_surface_report(surface, check);
+  report.faces = measured.faces;
+  report.vertices = measured.vertices;
+  report.area = measured.area;
+  report.volume = measured.volume;
+  report.components = measured.components;
+  report.quality = measured.quality;
+  report.valid = measured.valid;
+  report.defects = measured.defects;
+  report.input = s.report;
+  report.spheres = spheres;
+  report.threads = threads > 0 ? threads : omp_get_max_threads();
+  report.output = out;
+  report.outer_only = outer_only;
+  if (!json.empty()) write_file_atomically(json, surface_report_json(report));
+  if (!quiet) std::cout << "\n" << format_surface_report(report);
+  if (!report.valid) {
+    std::cerr << "molsurf: error: the surface written to " << out.string()
+              << " failed its check (see above); please report this with the input file\n";
+    return 1;
   }
   return 0;
 }

@@ -1,0 +1,61 @@
+#pragma once
+// What users study on a surface: area and volume, per component (outer surface and
+// cavities), per atom and per residue; rendered as text, JSON and CSV.
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/mesh.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/surface.hpp"
+
+namespace molsurf {
+
+struct ComponentMeasure {
+  std::size_t faces = 0;
+  double area = 0;
+  double volume = 0;  // signed: negative for a cavity (its faces point into it)
+  bool cavity() const { return volume < 0; }
+};
+
+// Components by shared vertices; the largest outer surface first, then by area.
+std::vector<ComponentMeasure> measure_components(const Mesh& mesh);
+
+// The mesh without its cavities (components of negative volume).
+Mesh outer_surface_only(const Mesh& mesh);
+
+// Area of the faces tagged with each atom (faces tagged outside [0, atom_count) are ignored).
+std::vector<double> area_per_atom(const Mesh& mesh, std::size_t atom_count);
+
+struct StageTimes {  // seconds
+  double read = 0, surface = 0, write = 0, check = 0;
+};
+
+struct SurfaceReport {
+  ReadReport input;
+  SphereOptions spheres;
+  std::size_t faces = 0, vertices = 0;
+  double area = 0, volume = 0;
+  std::vector<ComponentMeasure> components;
+  Quality quality;
+  bool valid = false;  // `check_mesh` on the surface written
+  std::vector<std::string> defects;
+  StageTimes seconds;
+  int threads = 1;
+  std::filesystem::path output;
+  bool outer_only = false;
+};
+
+SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);
+std::string format_surface_report(const SurfaceReport& report);
+std::string surface_report_json(const SurfaceReport& report);
+
+// CSV tables (atomic writes): one row per atom with its area, and one per residue.
+void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area);
+void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
+                           std::span<const double> area);
+
+}  // namespace molsurf

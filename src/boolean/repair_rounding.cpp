@@ -1,0 +1,184 @@
+#include "boolean/repair_rounding.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "geometry/predicates.hpp"
+
+namespace molsurf::boolean_engine {
+
+namespace {
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+}
+
+bool degenerate(const Mesh& m, const Triangle& t) {
+  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
+  return geometry::collinear3d(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
+}
+
+// Strictly between a and b on their common line (collinearity assumed).
+bool strictly_between(const Vec3& a, const Vec3& x, const Vec3& b) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (a[axis] == b[axis]) continue;
+    return (a[axis] < x[axis] && x[axis] < b[axis]) || (b[axis] < x[axis] && x[axis] < a[axis]);
+  }
+  return false;
+}
+
+class Repairer {
+ public:
+  Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source)
+      : m_(m), operand_(operand), source_(source), alive_(m.faces.size(), 1) {
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f) index_face(f);
+  }
+
+  std::size_t run() {
+    for (int pass = 0; pass < 8; ++pass) {
+      bool changed = false;
+      for (std::uint32_t f = 0; f < m_.faces.size(); ++f)
+        if (alive_[f] && degenerate(m_, m_.faces[f])) changed |= repair(f);
+      if (!changed) break;
+    }
+    std::size_t left = 0;
+    for (std::uint32_t f = 0; f < m_.faces.size(); ++f) left += alive_[f] && degenerate(m_, m_.faces[f]);
+    compact();
+    return left;
+  }
+
+ private:
+  void index_face(std::uint32_t f) {
+    const Triangle& t = m_.faces[f];
+    for (int i = 0; i < 3; ++i) edge_faces_[edge_key(t[i], t[(i + 1) % 3])].push_back(f);
+    for (Index v : t) vertex_faces_[v].push_back(f);
+  }
+  void unindex_face(std::uint32_t f) {
+    const Triangle& t = m_.faces[f];
+    for (int i = 0; i < 3; ++i) std::erase(edge_faces_[edge_key(t[i], t[(i + 1) % 3])], f);
+    for (Index v : t) std::erase(vertex_faces_[v], f);
+  }
+  std::uint32_t add_face(const Triangle& t, std::uint32_t like) {
+    const auto f = static_cast<std::uint32_t>(m_.faces.size());
+    m_.faces.push_back(t);
+    operand_.push_back(operand_[like]);
+    source_.push_back(source_[like]);
+    if (!m_.face_tags.empty()) m_.face_tags.push_back(m_.face_tags[like]);
+    alive_.push_back(1);
+    index_face(f);
+    return f;
+  }
+  void kill(std::uint32_t f) {
+    unindex_face(f);
+    alive_[f] = 0;
+  }
+
+  bool repair(std::uint32_t f) {
+    const Triangle t = m_.faces[f];
+    for (int i = 0; i < 3; ++i) {
+      const Index u = t[i], v = t[(i + 1) % 3];
+      if (u != v && m_.vertices[u] == m_.vertices[v]) return collapse(u, v);
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Index c = t[i], a = t[(i + 1) % 3], b = t[(i + 2) % 3];
+      if (strictly_between(m_.vertices[a], m_.vertices[c], m_.vertices[b])) return flip(f, a, b, c);
+    }
+    return false;
+  }
+
+  // Merges v into u (same position). Link condition: the vertices adjacent to both are
+  // exactly the opposite corners of the faces on edge uv.
+  bool collapse(Index u, Index v) {
+    const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
+    std::vector<Index> opposite;
+    for (std::uint32_t g : on_edge)
+      for (Index w : m_.faces[g])
+        if (w != u && w != v) opposite.push_back(w);
+    auto neighbours = [&](Index x) {
+      std::vector<Index> n;
+      for (std::uint32_t g : vertex_faces_[x])
+        for (Index w : m_.faces[g])
+          if (w != x) n.push_back(w);
+      std::sort(n.begin(), n.end());
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+      return n;
+    };
+    const std::vector<Index> nu = neighbours(u), nv = neighbours(v);
+    std::vector<Index> common;
+    std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
+    std::sort(opposite.begin(), opposite.end());
+    if (common != opposite) return false;
+    for (std::uint32_t g : on_edge) kill(g);
+    const std::vector<std::uint32_t> moving = vertex_faces_[v];
+    for (std::uint32_t g : moving) {
+      unindex_face(g);
+      for (Index& w : m_.faces[g])
+        if (w == v) w = u;
+      index_face(g);
+    }
+    return true;
+  }
+
+  // Face f = (.., a, b, .. with corner c strictly inside edge ab): flip ab with the other face.
+  bool flip(std::uint32_t f, Index a, Index b, Index c) {
+    const auto& around = edge_faces_[edge_key(a, b)];
+    if (around.size() != 2) return false;
+    const std::uint32_t g = around[0] == f ? around[1] : around[0];
+    Index d = 0;
+    for (Index w : m_.faces[g])
+      if (w != a && w != b) d = w;
+    if (edge_faces_.count(edge_key(c, d)) && !edge_faces_[edge_key(c, d)].empty()) return false;
+    // f runs a -> b (corner order c, a, b), so g runs b -> a: new faces (a, d, c), (d, b, c).
+    const Triangle& tf = m_.faces[f];
+    int k = 0;
+    while (tf[k] != c) ++k;
+    const bool f_runs_a_to_b = tf[(k + 1) % 3] == a;
+    const Index from = f_runs_a_to_b ? a : b, to = f_runs_a_to_b ? b : a;
+    kill(f);
+    kill(g);
+    add_face({from, d, c}, g);
+    add_face({d, to, c}, g);
+    return true;
+  }
+
+  void compact() {
+    std::size_t out = 0;
+    for (std::size_t f = 0; f < m_.faces.size(); ++f) {
+      if (!alive_[f]) continue;
+      m_.faces[out] = m_.faces[f];
+      operand_[out] = operand_[f];
+      source_[out] = source_[f];
+      if (!m_.face_tags.empty()) m_.face_tags[out] = m_.face_tags[f];
+      ++out;
+    }
+    m_.faces.resize(out);
+    operand_.resize(out);
+    source_.resize(out);
+    if (!m_.face_tags.empty()) m_.face_tags.resize(out);
+  }
+
+  Mesh& m_;
+  std::vector<std::uint8_t>& operand_;
+  std::vector<std::uint32_t>& source_;
+  std::vector<std::uint8_t> alive_;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_faces_;
+  std::unordered_map<Index, std::vector<std::uint32_t>> vertex_faces_;
+};
+
+}  // namespace
+
+std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
+                            std::vector<std::uint32_t>& face_source) {
+  // Only a face whose corners include a rounded point can have become degenerate; most
+  // results have none, and then nothing is indexed at all.
+  bool any = false;
+  for (const Triangle& t : mesh.faces)
+    if (degenerate(mesh, t)) {
+      any = true;
+      break;
+    }
+  if (!any) return 0;
+  return Repairer(mesh, face_operand, face_source).run();
+}
+
+}  // namespace molsurf::boolean_engine

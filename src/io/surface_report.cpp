@@ -1,0 +1,205 @@
+#include "molsurf/surface_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <tuple>
+
+#include "io/atomic_file.hpp"
+#include "io/json_writer.hpp"
+#include "molsurf/report.hpp"
+
+namespace molsurf {
+
+std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
+  const Components parts = connected_components(mesh);
+  std::vector<Mesh> pieces(parts.count);
+  for (Mesh& p : pieces) p.vertices = mesh.vertices;  // shared coordinates: volume needs them
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) pieces[parts.face_component[f]].faces.push_back(mesh.faces[f]);
+  std::vector<ComponentMeasure> out;
+  for (const Mesh& p : pieces) out.push_back({p.faces.size(), surface_area(p), signed_volume(p)});
+  std::stable_sort(out.begin(), out.end(), [](const ComponentMeasure& a, const ComponentMeasure& b) {
+    if (a.cavity() != b.cavity()) return !a.cavity();
+    return a.area > b.area;
+  });
+  return out;
+}
+
+Mesh outer_surface_only(const Mesh& mesh) {
+  const Components parts = connected_components(mesh);
+  std::vector<double> six_volume(parts.count, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Triangle& t = mesh.faces[f];
+    six_volume[parts.face_component[f]] += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]]));
+  }
+  Mesh out;
+  out.vertices = mesh.vertices;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (six_volume[parts.face_component[f]] <= 0) continue;
+    out.faces.push_back(mesh.faces[f]);
+    if (mesh.has_tags()) out.face_tags.push_back(mesh.face_tags[f]);
+  }
+  // Drop the vertices no face uses any more.
+  std::vector<Index> remap(out.vertices.size(), ~Index{0});
+  Mesh compact;
+  compact.face_tags = std::move(out.face_tags);
+  for (Triangle& t : out.faces)
+    for (Index& v : t) {
+      if (remap[v] == ~Index{0}) {
+        remap[v] = static_cast<Index>(compact.vertices.size());
+        compact.vertices.push_back(out.vertices[v]);
+      }
+      v = remap[v];
+    }
+  compact.faces = std::move(out.faces);
+  return compact;
+}
+
+std::vector<double> area_per_atom(const Mesh& mesh, std::size_t atom_count) {
+  std::vector<double> area(atom_count, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::int32_t t = mesh.tag(f);
+    if (t >= 0 && static_cast<std::size_t>(t) < atom_count) area[t] += face_area(mesh, f);
+  }
+  return area;
+}
+
+SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check) {
+  SurfaceReport r;
+  r.faces = surface.faces.size();
+  r.vertices = surface.vertices.size();
+  r.area = check.area;
+  r.volume = check.volume;
+  r.components = measure_components(surface);
+  r.quality = check.quality;
+  r.valid = check.valid();
+  r.defects = check.defects();
+  return r;
+}
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+std::string format_surface_report(const SurfaceReport& r) {
+  std::string out;
+  auto row = [&](const std::string& label, const std::string& value) {
+    out += "  " + label + std::string(label.size() < 22 ? 22 - label.size() : 1, ' ') + value + "\n";
+  };
+  row("surface", r.output.string() + (r.outer_only ? " (outer surface only)" : ""));
+  row("faces / vertices", std::to_string(r.faces) + " / " + std::to_string(r.vertices));
+  row("area", fixed(r.area, 2) + " A^2");
+  row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
+  std::size_t cavities = 0;
+  for (const auto& c : r.components) cavities += c.cavity();
+  row("components", std::to_string(r.components.size() - cavities) + " outer, " + std::to_string(cavities) +
+                        " cavit" + (cavities == 1 ? "y" : "ies"));
+  std::size_t shown = 0;
+  for (const auto& c : r.components) {
+    if (shown == 8) {
+      row("", "... (" + std::to_string(r.components.size() - shown) + " more; --json lists all)");
+      break;
+    }
+    row(shown == 0 ? "  by component" : "",
+        std::string(c.cavity() ? "cavity " : "outer  ") + "area " + fixed(c.area, 2) + " A^2, volume " +
+            fixed(std::abs(c.volume), 2) + " A^3, " + std::to_string(c.faces) + " faces");
+    ++shown;
+  }
+  row("quality", "min angle " + fixed(r.quality.min_angle_deg, 3) + " deg; faces < 5 deg: " +
+                     std::to_string(r.quality.below_5deg) + ", < 1 deg: " + std::to_string(r.quality.below_1deg));
+  row("check", r.valid ? "valid: closed, 2-manifold, outward, no self-intersection" : "INVALID");
+  for (const std::string& d : r.defects) row("", "- " + d);
+  row("time", "read " + fixed(r.seconds.read, 2) + " s, surface " + fixed(r.seconds.surface, 2) + " s, check " +
+                  fixed(r.seconds.check, 2) + " s, write " + fixed(r.seconds.write, 2) + " s (" +
+                  std::to_string(r.threads) + " thread" + (r.threads == 1 ? "" : "s") + ")");
+  return out;
+}
+
+std::string surface_report_json(const SurfaceReport& r) {
+  io::JsonWriter j;
+  j.begin_object();
+  j.key("input").begin_object();
+  j.field("file", r.input.file.string()).field("model", r.input.model_used).field("records", r.input.records);
+  j.field("atoms", r.input.kept).field("dropped_water", r.input.dropped_water);
+  j.field("dropped_hydrogen", r.input.dropped_hydrogen).field("dropped_altloc", r.input.dropped_altloc);
+  j.field("dropped_hetatm", r.input.dropped_hetatm).field("dropped_chain", r.input.dropped_chain);
+  j.field("radius_set", r.input.radius_set).field("radius_from_element", r.input.radius_from_element);
+  j.field("radius_default", r.input.radius_default);
+  j.end_object();
+  j.field("probe", r.spheres.probe).field("density", r.spheres.density).field("frequency", r.spheres.frequency);
+  j.field("area_corrected", r.spheres.area_corrected);
+  j.field("output", r.output.string()).field("outer_only", r.outer_only);
+  j.field("faces", r.faces).field("vertices", r.vertices).field("area", r.area).field("volume", r.volume);
+  j.key("components").begin_array();
+  for (const auto& c : r.components) {
+    j.begin_object();
+    j.field("kind", c.cavity() ? "cavity" : "outer").field("faces", c.faces).field("area", c.area);
+    j.field("volume", std::abs(c.volume));
+    j.end_object();
+  }
+  j.end_array();
+  j.key("quality").begin_object();
+  j.field("min_angle_deg", r.quality.min_angle_deg).field("faces_below_5deg", r.quality.below_5deg);
+  j.field("faces_below_1deg", r.quality.below_1deg).field("max_aspect_ratio", r.quality.max_aspect_ratio);
+  j.end_object();
+  j.field("valid", r.valid);
+  j.key("seconds").begin_object();
+  j.field("read", r.seconds.read).field("surface", r.seconds.surface).field("check", r.seconds.check);
+  j.field("write", r.seconds.write);
+  j.end_object();
+  j.field("threads", r.threads);
+  j.end_object();
+  return j.str();
+}
+
+void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area) {
+  std::string csv = "index,serial,chain,residue_name,residue_number,insertion_code,atom_name,element,radius,area\n";
+  char line[256];
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    const Atom& a = atoms[i];
+    std::snprintf(line, sizeof line, "%zu,%d,%s,%s,%d,%c,%s,%s,%.3f,%.4f\n", i, a.serial, a.chain.c_str(),
+                  a.residue_name.c_str(), a.residue_number, a.insertion_code == ' ' ? '_' : a.insertion_code,
+                  a.atom_name.c_str(), a.element.c_str(), a.radius, area[i]);
+    csv += line;
+  }
+  write_file_atomically(path, csv);
+}
+
+void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
+                           std::span<const double> area) {
+  // Residues in order of first appearance.
+  using Key = std::tuple<std::string, int, char, std::string>;
+  std::map<Key, std::size_t> index;
+  std::vector<std::pair<Key, double>> rows;
+  std::vector<std::size_t> atoms_in;
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    const Atom& a = atoms[i];
+    const Key key{a.chain, a.residue_number, a.insertion_code, a.residue_name};
+    auto [it, inserted] = index.try_emplace(key, rows.size());
+    if (inserted) {
+      rows.emplace_back(key, 0.0);
+      atoms_in.push_back(0);
+    }
+    rows[it->second].second += area[i];
+    ++atoms_in[it->second];
+  }
+  std::string csv = "chain,residue_name,residue_number,insertion_code,atoms,area\n";
+  char line[256];
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const auto& [key, a] = rows[k];
+    const char icode = std::get<2>(key);
+    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%.4f\n", std::get<0>(key).c_str(), std::get<3>(key).c_str(),
+                  std::get<1>(key), icode == ' ' ? '_' : icode, atoms_in[k], a);
+    csv += line;
+  }
+  write_file_atomically(path, csv);
+}
+
+}  // namespace molsurf

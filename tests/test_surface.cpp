@@ -1,0 +1,132 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/icosphere.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/surface.hpp"
+#include "molsurf/surface_report.hpp"
+
+namespace molsurf {
+namespace {
+
+const std::string kData = MOLSURF_DATA_DIR;
+
+Atom atom_at(const Vec3& c, double r) {
+  Atom a;
+  a.centre = c;
+  a.radius = r;
+  a.element = "C";
+  return a;
+}
+
+::testing::AssertionResult valid(const Mesh& m) {
+  const MeshCheck c = check_mesh(m);
+  if (c.valid()) return ::testing::AssertionSuccess();
+  auto failure = ::testing::AssertionFailure();
+  for (const auto& d : c.defects()) failure << d << "\n";
+  return failure;
+}
+
+TEST(Surface, OneAtomIsItsSphere) {
+  const std::vector<Atom> atoms{atom_at({1, 2, 3}, 1.7)};
+  SurfaceOptions o;
+  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  const Mesh sphere = atom_sphere(atoms[0], 0, o.spheres);
+  EXPECT_EQ(r.mesh.face_count(), sphere.face_count());
+  EXPECT_DOUBLE_EQ(surface_area(r.mesh), surface_area(sphere));
+  EXPECT_EQ(r.merges, 0u);
+}
+
+TEST(Surface, TwoOverlappingAtoms) {
+  const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.7), atom_at({2.1, 0.3, 0.2}, 1.5)};
+  SurfaceOptions o;
+  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  EXPECT_TRUE(valid(r.mesh));
+  const double a0 = surface_area(atom_sphere(atoms[0], 0, o.spheres));
+  const double a1 = surface_area(atom_sphere(atoms[1], 1, o.spheres));
+  const double area = surface_area(r.mesh);
+  EXPECT_LT(area, a0 + a1);
+  EXPECT_GT(area, std::max(a0, a1));
+  const auto per_atom = area_per_atom(r.mesh, 2);
+  EXPECT_NEAR(per_atom[0] + per_atom[1], area, 1e-9 * area);
+  EXPECT_GT(per_atom[0], 0);
+  EXPECT_GT(per_atom[1], 0);
+}
+
+TEST(Surface, DuplicateAtomsAndABuriedAtom) {
+  const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.7), atom_at({0, 0, 0}, 1.7), atom_at({0.1, 0, 0}, 0.2),
+                                atom_at({2, 0, 0}, 1.5)};
+  const SurfaceResult r = solvent_accessible_surface(atoms, {});
+  EXPECT_TRUE(valid(r.mesh));
+  const auto per_atom = area_per_atom(r.mesh, atoms.size());
+  EXPECT_EQ(per_atom[2], 0);                    // buried
+  EXPECT_EQ(per_atom[0] * per_atom[1], 0);      // the duplicate's faces come from one copy only
+  EXPECT_GT(per_atom[0] + per_atom[1], 0);
+}
+
+TEST(Surface, TouchingSpheresStayApart) {
+  // r + probe = 1.5 + 1.4 each, centres 5.8 apart: the probe-inflated spheres touch.
+  const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.5), atom_at({5.8, 0, 0}, 1.5)};
+  SurfaceOptions o;
+  o.spheres.frequency = 3;
+  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  EXPECT_TRUE(valid(r.mesh));
+  EXPECT_EQ(connected_components(r.mesh).count, 2u);
+}
+
+class Crambin : public ::testing::TestWithParam<std::tuple<double, double>> {};
+
+TEST_P(Crambin, ValidSurfaceAtEachDensityAndProbe) {
+  const auto [density, probe] = GetParam();
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  SurfaceOptions o;
+  o.spheres.density = density;
+  o.spheres.probe = probe;
+  const SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  EXPECT_TRUE(valid(r.mesh)) << "density " << density << " probe " << probe;
+  EXPECT_GT(signed_volume(r.mesh), 0);
+  const auto per_atom = area_per_atom(r.mesh, s.atoms.size());
+  EXPECT_NEAR(std::accumulate(per_atom.begin(), per_atom.end(), 0.0), surface_area(r.mesh), 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(DensitiesAndProbes, Crambin,
+                         ::testing::Combine(::testing::Values(1.0, 2.0, 4.0), ::testing::Values(0.0, 1.4)));
+
+TEST(Surface, CrambinAreaAgreesWithLeeRichards) {
+  // FreeSASA 2.1.2 (Lee-Richards, ProtOr radii, probe 1.4) gives 2999.32 A^2 for 1crn.pdb.
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  const SurfaceResult r = solvent_accessible_surface(s.atoms, {});
+  EXPECT_NEAR(surface_area(r.mesh), 2999.32, 0.005 * 2999.32);
+}
+
+TEST(Surface, SameResultWithOneOrTwoThreads) {
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  SurfaceOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const SurfaceResult a = solvent_accessible_surface(s.atoms, one);
+  const SurfaceResult b = solvent_accessible_surface(s.atoms, two);
+  ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+  EXPECT_TRUE(a.mesh.vertices == b.mesh.vertices);
+  EXPECT_TRUE(a.mesh.faces == b.mesh.faces);
+  EXPECT_TRUE(a.mesh.face_tags == b.mesh.face_tags);
+}
+
+TEST(Surface, OuterOnlyDropsCavities) {
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  const SurfaceResult r = solvent_accessible_surface(s.atoms, {});
+  const auto components = measure_components(r.mesh);
+  ASSERT_GE(components.size(), 2u);  // crambin has a small cavity at this resolution
+  EXPECT_FALSE(components.front().cavity());
+  const Mesh outer = outer_surface_only(r.mesh);
+  EXPECT_TRUE(valid(outer));
+  EXPECT_EQ(measure_components(outer).size(), 1u);
+  EXPECT_GT(signed_volume(outer), signed_volume(r.mesh));  // cavities no longer subtracted
+}
+
+}  // namespace
+}  // namespace molsurf
