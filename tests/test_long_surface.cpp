@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "molsurf/atoms.hpp"
+#include "molsurf/cleanup.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
 
@@ -22,7 +23,9 @@ TEST_P(Structures, ValidSurface) {
   SurfaceOptions o;
   o.spheres.density = density;
   o.spheres.probe = probe;
-  const SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  EXPECT_TRUE(check_mesh(r.mesh).valid()) << "before cleanup";
+  improve_surface(r.mesh);  // what `molsurf STRUCTURE` writes
   const MeshCheck c = check_mesh(r.mesh);
   EXPECT_TRUE(c.valid()) << ::testing::PrintToString(c.defects());
   EXPECT_GT(c.volume, 0);

@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
 #include "molsurf/atoms.hpp"
+#include "molsurf/cleanup.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
@@ -31,7 +34,7 @@ Mesh outer_surface_only(const Mesh& mesh);
 std::vector<double> area_per_atom(const Mesh& mesh, std::size_t atom_count);
 
 struct StageTimes {  // seconds
-  double read = 0, surface = 0, write = 0, check = 0;
+  double read = 0, surface = 0, cleanup = 0, write = 0, check = 0;
 };
 
 struct SurfaceReport {
@@ -41,6 +44,7 @@ struct SurfaceReport {
   double area = 0, volume = 0;
   std::vector<ComponentMeasure> components;
   Quality quality;
+  std::optional<CleanupStats> cleanup;  // absent with --no-cleanup
   bool valid = false;  // `check_mesh` on the surface written
   std::vector<std::string> defects;
   StageTimes seconds;

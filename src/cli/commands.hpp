@@ -19,6 +19,7 @@ struct SurfaceCommand {
   int threads = 0;
   bool outer_only = false;
   bool skip_check = false;
+  bool skip_cleanup = false;
   std::filesystem::path json, per_atom, per_residue;
   bool quiet = false;
 

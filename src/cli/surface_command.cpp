@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "molsurf/io.hpp"
+#include "molsurf/cleanup.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/report.hpp"
 #include "molsurf/surface_report.hpp"
@@ -68,6 +69,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
   app.add_option("--json", json, "Write the report as JSON to this file")->group(output_group);
   app.add_option("--per-atom", per_atom, "Write each atom's area (A^2) to this CSV file")->group(output_group);
   app.add_option("--per-residue", per_residue, "Write each residue's area (A^2) to this CSV file")
+      ->group(output_group);
+  app.add_flag("--no-cleanup", skip_cleanup,
+               "Skip the surface improvement (paper 2.5: collapse of slivers under 5 degrees)")
       ->group(output_group);
   app.add_flag("--no-check", skip_check, "Do not re-check the written surface (closed, manifold, no self-intersection)")
       ->group(output_group);
@@ -135,6 +139,10 @@ int SurfaceCommand::run() const {
   SurfaceResult sas = solvent_accessible_surface(s.atoms, surface_options);
   Mesh surface = outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
   report.seconds.surface = seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
+  std::optional<CleanupStats> cleanup;
+  if (!skip_cleanup) cleanup = improve_surface(surface);
+  report.seconds.cleanup = seconds_since(clock);
 
   clock = std::chrono::steady_clock::now();
   MeshCheckOptions check_options;
@@ -160,6 +168,7 @@ int SurfaceCommand::run() const {
   report.volume = measured.volume;
   report.components = measured.components;
   report.quality = measured.quality;
+  report.cleanup = cleanup;
   report.valid = measured.valid;
   report.defects = measured.defects;
   report.input = s.report;

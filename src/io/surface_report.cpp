@@ -112,11 +112,22 @@ std::string format_surface_report(const SurfaceReport& r) {
             fixed(std::abs(c.volume), 2) + " A^3, " + std::to_string(c.faces) + " faces");
     ++shown;
   }
-  row("quality", "min angle " + fixed(r.quality.min_angle_deg, 3) + " deg; faces < 5 deg: " +
-                     std::to_string(r.quality.below_5deg) + ", < 1 deg: " + std::to_string(r.quality.below_1deg));
+  if (r.cleanup) {
+    const CleanupStats& c = *r.cleanup;
+    row("cleanup", std::to_string(c.collapses) + " edge collapses, " + std::to_string(c.flips) + " flips; area " +
+                       (c.area_after >= c.area_before ? "+" : "") +
+                       fixed(100 * (c.area_after - c.area_before) / c.area_before, 4) + " %");
+    row("quality before", "min angle " + fixed(c.before.min_angle_deg, 3) + " deg; faces < 5 deg: " +
+                              std::to_string(c.before.below_5deg) + ", < 1 deg: " + std::to_string(c.before.below_1deg) +
+                              " of " + std::to_string(c.before.faces));
+  }
+  row(r.cleanup ? "quality after" : "quality",
+      "min angle " + fixed(r.quality.min_angle_deg, 3) + " deg; faces < 5 deg: " + std::to_string(r.quality.below_5deg) +
+          ", < 1 deg: " + std::to_string(r.quality.below_1deg) + " of " + std::to_string(r.quality.faces));
   row("check", r.valid ? "valid: closed, 2-manifold, outward, no self-intersection" : "INVALID");
   for (const std::string& d : r.defects) row("", "- " + d);
-  row("time", "read " + fixed(r.seconds.read, 2) + " s, surface " + fixed(r.seconds.surface, 2) + " s, check " +
+  row("time", "read " + fixed(r.seconds.read, 2) + " s, surface " + fixed(r.seconds.surface, 2) + " s, cleanup " +
+                  fixed(r.seconds.cleanup, 2) + " s, check " +
                   fixed(r.seconds.check, 2) + " s, write " + fixed(r.seconds.write, 2) + " s (" +
                   std::to_string(r.threads) + " thread" + (r.threads == 1 ? "" : "s") + ")");
   return out;
@@ -149,9 +160,18 @@ std::string surface_report_json(const SurfaceReport& r) {
   j.field("min_angle_deg", r.quality.min_angle_deg).field("faces_below_5deg", r.quality.below_5deg);
   j.field("faces_below_1deg", r.quality.below_1deg).field("max_aspect_ratio", r.quality.max_aspect_ratio);
   j.end_object();
+  if (r.cleanup) {
+    const CleanupStats& c = *r.cleanup;
+    j.key("cleanup").begin_object();
+    j.field("collapses", c.collapses).field("flips", c.flips).field("area_before", c.area_before);
+    j.field("area_after", c.area_after).field("min_angle_deg_before", c.before.min_angle_deg);
+    j.field("faces_below_5deg_before", c.before.below_5deg).field("faces_below_1deg_before", c.before.below_1deg);
+    j.end_object();
+  }
   j.field("valid", r.valid);
   j.key("seconds").begin_object();
-  j.field("read", r.seconds.read).field("surface", r.seconds.surface).field("check", r.seconds.check);
+  j.field("read", r.seconds.read).field("surface", r.seconds.surface).field("cleanup", r.seconds.cleanup);
+  j.field("check", r.seconds.check);
   j.field("write", r.seconds.write);
   j.end_object();
   j.field("threads", r.threads);
