@@ -73,3 +73,19 @@ TEST(ImplicitPoint, MixedExplicitAndImplicitOrientation) {
 
 }  // namespace
 }  // namespace molsurf::geometry
+
+namespace molsurf::geometry {
+namespace {
+
+TEST(Interval, OutwardRoundingMatchesNextafter) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double v : {0.0, -0.0, 1.0, -1.0, 1e-310, -1e-310, 3.5e300, -2.2e-16, 0.1, -0.1}) {
+    EXPECT_EQ(interval_detail::up(v), std::nextafter(v, inf)) << v;
+    EXPECT_EQ(interval_detail::down(v), std::nextafter(v, -inf)) << v;
+  }
+  EXPECT_EQ(interval_detail::up(inf), inf);
+  EXPECT_EQ(interval_detail::down(-inf), -inf);
+}
+
+}  // namespace
+}  // namespace molsurf::geometry

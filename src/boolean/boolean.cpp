@@ -54,7 +54,7 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
 
   std::vector<PairIntersection> pairs(candidates.size());
   const auto pair_count = static_cast<std::int64_t>(candidates.size());
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (pair_count > 2048)
   for (std::int64_t k = 0; k < pair_count; ++k)
     pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second);
   std::erase_if(pairs, [](const PairIntersection& p) { return p.empty(); });

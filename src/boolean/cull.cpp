@@ -24,7 +24,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> cull_face_pairs(const Opera
 
   const auto face_count_a = static_cast<std::int64_t>(a.faces.size());
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> per_face(a.faces.size());
-#pragma omp parallel for schedule(dynamic, 256)
+// Small unions (most of a molecule's merge tree) stay serial: a parallel region costs more.
+#pragma omp parallel for schedule(dynamic, 256) if (face_count_a > 8192)
   for (std::int64_t f = 0; f < face_count_a; ++f) {
     const BoundingBox box = geometry::face_box(a, static_cast<std::size_t>(f));
     if (!box.overlaps(overlap)) continue;

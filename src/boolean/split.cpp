@@ -56,7 +56,7 @@ SplitResult split_faces(const Operands& ops, const Arrangement& arr) {
     if (arr.face_is_cut(ops, f)) cut.push_back(f);
   std::vector<FaceSplit> pieces(cut.size());
   const auto cut_count = static_cast<std::int64_t>(cut.size());
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 16) if (cut_count > 128)
   for (std::int64_t k = 0; k < cut_count; ++k) pieces[k] = split_one_face(ops, arr, cut[k]);
 
   SplitResult result;

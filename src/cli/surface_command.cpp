@@ -123,6 +123,7 @@ int SurfaceCommand::run() const {
   for (std::string chain; std::getline(list, chain, ',');)
     if (!chain.empty()) options.chains.push_back(chain);
 
+  if (threads > 0) omp_set_num_threads(threads);  // for every parallel loop, the engine's too
   SurfaceReport report;
   auto clock = std::chrono::steady_clock::now();
   const Structure s = read_structure(structure, options);

@@ -4,6 +4,8 @@
 // widens each bound by one ulp, so the exact real result always lies inside; a sign is
 // certain when the interval excludes zero.
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -27,8 +29,16 @@ struct Interval {
 };
 
 namespace interval_detail {
-inline double down(double v) { return std::nextafter(v, -std::numeric_limits<double>::infinity()); }
-inline double up(double v) { return std::nextafter(v, std::numeric_limits<double>::infinity()); }
+// The next double towards -inf / +inf (what std::nextafter does, without the libm call:
+// this is the filter's hot path). Adjacent doubles of one sign have adjacent bit patterns.
+inline double up(double v) {
+  if (!(v < std::numeric_limits<double>::infinity())) return v;  // +inf, NaN
+  if (v == 0) return std::numeric_limits<double>::denorm_min();
+  auto bits = std::bit_cast<std::uint64_t>(v);
+  bits += v > 0 ? 1 : -1;  // away from zero when positive, towards zero when negative
+  return std::bit_cast<double>(bits);
+}
+inline double down(double v) { return -up(-v); }
 }  // namespace interval_detail
 
 inline Interval operator+(const Interval& a, const Interval& b) {
