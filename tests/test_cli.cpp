@@ -22,7 +22,7 @@ TEST(Cli, HelpExplainsEveryOptionWithItsDefault) {
   EXPECT_EQ(r.exit_code, 0);
   for (const char* option : {"--output", "--model", "--chains", "--keep-water", "--hydrogens", "--no-hetatm",
                              "--radius-set", "--radii", "--probe", "--density", "--frequency",
-                             "--area-corrected", "--quiet", "--version", "check"})
+                             "--inscribed", "--quiet", "--version", "check"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
   EXPECT_NE(r.out.find("1.4"), std::string::npos);      // probe default
   EXPECT_NE(r.out.find("protor"), std::string::npos);   // radius set default

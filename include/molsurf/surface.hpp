@@ -15,7 +15,10 @@ struct SphereOptions {
   double probe = 1.4;     // angstrom; 0 gives the van der Waals surface
   double density = 2.0;   // vertices per square angstrom of each sphere (MSMS's convention)
   int frequency = 0;      // fixed icosphere frequency for every atom; 0: from density
-  bool area_corrected = false;  // scale each polyhedron so its area equals the sphere's
+  // Scale each polyhedron so its area equals the sphere's. On by default: with it, area and
+  // volume of the union are within 0.5 % of the exact union of balls at density 2
+  // (docs/accuracy.md); inscribed polyhedra lose about 1 % of the volume.
+  bool area_corrected = true;
 };
 
 double sphere_radius(const Atom& atom, const SphereOptions& options);

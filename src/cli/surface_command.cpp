@@ -59,8 +59,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "Fixed icosphere frequency n for every atom (20 n^2 faces); overrides --density")
       ->check(CLI::Range(1, 200))
       ->group(sphere);
-  app.add_flag("--area-corrected", spheres.area_corrected,
-               "Scale each icosphere so its area equals the true sphere's (default: vertices on the sphere)")
+  app.add_flag("--inscribed", [this](std::int64_t) { spheres.area_corrected = false; },
+               "Put icosphere vertices on the true spheres (inscribed polyhedra: about 1 % less volume).\n"
+               "Default: each icosphere scaled so its area equals the sphere's (docs/accuracy.md)")
       ->group(sphere);
 
   auto* output_group = "Output and reports";

@@ -101,6 +101,8 @@ std::string format_sphere_plan(const SpherePlan& plan, const SphereOptions& opti
     t.row("spheres", "frequency " + std::to_string(options.frequency) + " for every atom");
   else
     t.row("spheres", "density " + fixed(options.density, 2) + " vertices/A^2");
+  t.row("polyhedra", options.area_corrected ? "area-corrected (area of each equals its sphere's)"
+                                             : "inscribed (vertices on the spheres)");
   t.row("radii + probe", fixed(plan.min_radius, 2) + " - " + fixed(plan.max_radius, 2) + " A");
   std::string freq;
   for (const auto& [n, count] : plan.atoms_by_frequency) {
