@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "boolean_invariants.hpp"
 #include "mesh_fixtures.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/icosphere.hpp"
@@ -12,13 +13,7 @@
 namespace molsurf {
 namespace {
 
-::testing::AssertionResult valid(const Mesh& m) {
-  const MeshCheck c = check_mesh(m);
-  if (c.valid()) return ::testing::AssertionSuccess();
-  auto failure = ::testing::AssertionFailure();
-  for (const auto& d : c.defects()) failure << d << "\n";
-  return failure;
-}
+::testing::AssertionResult valid(const Mesh& m) { return testing::valid_surface(m); }
 
 struct Volumes {
   double a, b, uni, inter, diff;

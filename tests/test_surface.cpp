@@ -4,6 +4,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "boolean_invariants.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
@@ -23,13 +24,8 @@ Atom atom_at(const Vec3& c, double r) {
   return a;
 }
 
-::testing::AssertionResult valid(const Mesh& m) {
-  const MeshCheck c = check_mesh(m);
-  if (c.valid()) return ::testing::AssertionSuccess();
-  auto failure = ::testing::AssertionFailure();
-  for (const auto& d : c.defects()) failure << d << "\n";
-  return failure;
-}
+using testing::valid_surface;
+::testing::AssertionResult valid(const Mesh& m) { return valid_surface(m); }
 
 TEST(Surface, OneAtomIsItsSphere) {
   const std::vector<Atom> atoms{atom_at({1, 2, 3}, 1.7)};

@@ -1,5 +1,7 @@
 #include "boolean/arrangement.hpp"
 
+#include "mesh/topology.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <unordered_map>
@@ -8,10 +10,6 @@ namespace molsurf::boolean_engine {
 
 namespace {
 
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
 
 void sort_unique(std::vector<std::uint32_t>& v) {
   std::sort(v.begin(), v.end());
@@ -32,17 +30,13 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   const std::uint32_t vertex_count = ops.vertex_count();
 
   // Coincident vertices of a and b become one point: the lowest index (a's) stands for all.
-  std::vector<std::uint32_t> parent(vertex_count);
-  std::iota(parent.begin(), parent.end(), 0u);
+  DisjointSets same_position(vertex_count);
   for (const PairIntersection& pair : pairs)
-    for (auto [va, vb] : pair.coincident_vertices) {
-      const std::uint32_t ra = find_root(parent, va), rb = find_root(parent, vb);
-      if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
-    }
+    for (auto [va, vb] : pair.coincident_vertices) same_position.unite(va, vb);
   arr.vertex_point.resize(vertex_count);
   arr.points.reserve(vertex_count);
   for (std::uint32_t v = 0; v < vertex_count; ++v) {
-    arr.vertex_point[v] = find_root(parent, v);
+    arr.vertex_point[v] = same_position.find(v);
     arr.points.push_back(geometry::ImplicitPoint::explicit_point(ops.vertex(v)));
   }
 

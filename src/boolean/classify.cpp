@@ -1,6 +1,8 @@
 #include "boolean/classify.hpp"
 
 #include <algorithm>
+
+#include "mesh/topology.hpp"
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -13,14 +15,8 @@ namespace molsurf::boolean_engine {
 
 namespace {
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
-}
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
 
 // A sub-face lies in coplanar face g of the other operand when its three corners are in
 // the closed triangle g (the constraints include g's boundary, so a piece is either
@@ -61,12 +57,8 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   std::unordered_set<std::uint64_t> curve;
   curve.reserve(intersection_edges.size() * 2);
   for (auto [a, b] : intersection_edges) curve.insert(edge_key(a, b));
-  std::vector<std::uint32_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto unite = [&](std::uint32_t x, std::uint32_t y) {
-    const std::uint32_t r1 = find_root(parent, x), r2 = find_root(parent, y);
-    if (r1 != r2) parent[std::max(r1, r2)] = std::min(r1, r2);
-  };
+  DisjointSets patches(n);
+  auto unite = [&](std::uint32_t x, std::uint32_t y) { patches.unite(x, y); };
   // Pieces of cut faces meet along point-id edges: hash those (few). Whole faces meet
   // their neighbours across input edges: the operands' edge table joins them directly.
   std::unordered_map<std::uint64_t, std::uint32_t> piece_on_edge[2];
@@ -104,7 +96,7 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
 
   // Members of each patch, patches in order of their lowest sub-face (deterministic).
   std::vector<std::uint32_t> root(n);
-  for (std::uint32_t s = 0; s < n; ++s) root[s] = find_root(parent, s);
+  for (std::uint32_t s = 0; s < n; ++s) root[s] = patches.find(s);
   std::vector<std::uint32_t> members(n);
   std::iota(members.begin(), members.end(), 0u);
   std::stable_sort(members.begin(), members.end(), [&](std::uint32_t x, std::uint32_t y) { return root[x] < root[y]; });

@@ -4,14 +4,13 @@
 #include <unordered_map>
 
 #include "geometry/predicates.hpp"
+#include "mesh/topology.hpp"
 
 namespace molsurf::boolean_engine {
 
 namespace {
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
-}
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
 bool degenerate(const Mesh& m, const Triangle& t) {
   if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
@@ -90,24 +89,7 @@ class Repairer {
   // exactly the opposite corners of the faces on edge uv.
   bool collapse(Index u, Index v) {
     const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
-    std::vector<Index> opposite;
-    for (std::uint32_t g : on_edge)
-      for (Index w : m_.faces[g])
-        if (w != u && w != v) opposite.push_back(w);
-    auto neighbours = [&](Index x) {
-      std::vector<Index> n;
-      for (std::uint32_t g : vertex_faces_[x])
-        for (Index w : m_.faces[g])
-          if (w != x) n.push_back(w);
-      std::sort(n.begin(), n.end());
-      n.erase(std::unique(n.begin(), n.end()), n.end());
-      return n;
-    };
-    const std::vector<Index> nu = neighbours(u), nv = neighbours(v);
-    std::vector<Index> common;
-    std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
-    std::sort(opposite.begin(), opposite.end());
-    if (common != opposite) return false;
+    if (!link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
     for (std::uint32_t g : on_edge) kill(g);
     const std::vector<std::uint32_t> moving = vertex_faces_[v];
     for (std::uint32_t g : moving) {

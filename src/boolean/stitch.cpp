@@ -3,6 +3,8 @@
 #include "boolean/repair_rounding.hpp"
 
 #include <algorithm>
+
+#include "mesh/topology.hpp"
 #include <array>
 #include <gmpxx.h>
 #include <numeric>
@@ -36,14 +38,8 @@ Keep select_sub_face(BooleanOp op, int operand, Side side) {
 
 namespace {
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
-}
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
 
 Vec3 rounded_point(const geometry::ImplicitPoint& p) {
   if (p.is_explicit()) return p.explicit_value();
@@ -136,8 +132,7 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::v
   // Corner slots: 3 per listed face; join slots of the same vertex across connecting edges.
   std::unordered_map<std::uint32_t, std::uint32_t> slot_base;
   for (std::uint32_t k = 0; k < faces.size(); ++k) slot_base.emplace(faces[k], 3 * k);
-  std::vector<std::uint32_t> parent(3 * faces.size());
-  std::iota(parent.begin(), parent.end(), 0u);
+  DisjointSets fans(3 * faces.size());
   auto slot = [&](std::uint32_t f, std::uint32_t v) {
     const std::uint32_t base = slot_base.at(f);
     for (std::uint32_t i = 0; i < 3; ++i)
@@ -146,8 +141,7 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::v
   };
   auto join = [&](std::uint32_t f, std::uint32_t g, std::uint32_t a, std::uint32_t b) {
     for (std::uint32_t v : {a, b}) {
-      const std::uint32_t x = find_root(parent, slot(f, v)), y = find_root(parent, slot(g, v));
-      if (x != y) parent[std::max(x, y)] = std::min(x, y);
+      fans.unite(slot(f, v), slot(g, v));
     }
   };
   for (const auto& [key, around] : faces_by_edge(m, faces)) {
@@ -168,7 +162,7 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::v
     Triangle& t = m.faces[faces[s / 3]];
     const std::uint32_t v = t[s % 3];
     if (!may_split(v)) continue;
-    const std::uint32_t fan = find_root(parent, s);
+    const std::uint32_t fan = fans.find(s);
     auto [it, first] = first_fan_of_vertex.try_emplace(v, fan);
     if (first || it->second == fan) continue;
     auto [copy, is_new] = copy_of_fan.try_emplace(fan, static_cast<std::uint32_t>(m.vertices.size()));

@@ -1,5 +1,7 @@
 #include "molsurf/mesh.hpp"
 
+#include "mesh/topology.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -108,22 +110,6 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh) {
 
 namespace {
 
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 }  // namespace
 

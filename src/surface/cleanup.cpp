@@ -10,6 +10,7 @@
 
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
+#include "mesh/topology.hpp"
 
 namespace molsurf {
 
@@ -239,25 +240,7 @@ class Collapser {
         moving.push_back(g);
     }
     if (on_edge.size() != 2) return false;
-    // Link condition.
-    std::vector<Index> opposite;
-    for (std::uint32_t g : on_edge)
-      for (Index w : m_.faces[g])
-        if (w != u && w != v) opposite.push_back(w);
-    auto neighbours = [&](Index x) {
-      std::vector<Index> n;
-      for (std::uint32_t g : faces_of_[x])
-        for (Index w : m_.faces[g])
-          if (w != x) n.push_back(w);
-      std::sort(n.begin(), n.end());
-      n.erase(std::unique(n.begin(), n.end()), n.end());
-      return n;
-    };
-    const std::vector<Index> nu = neighbours(u), nv = neighbours(v);
-    std::vector<Index> common;
-    std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
-    std::sort(opposite.begin(), opposite.end());
-    if (common != opposite) return false;
+    if (!link_condition(m_, faces_of_[u], faces_of_[v], on_edge, u, v)) return false;
 
     // Quality before: every face that changes or disappears.
     double before = 180, after = 180, area_before = 0, area_after = 0;

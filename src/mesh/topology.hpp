@@ -1,0 +1,66 @@
+#pragma once
+// Small topology tools shared by the engine and the surface improvement.
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <numeric>
+#include <span>
+#include <vector>
+
+#include "molsurf/mesh.hpp"
+
+namespace molsurf {
+
+// One key per undirected edge (the two vertex indices, lower first).
+inline std::uint64_t undirected_edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+}
+
+// Union-find with path halving; the root of a set is its smallest element, so numbering
+// by roots is deterministic.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+// The vertices joined to x by the faces around it (sorted, unique).
+inline std::vector<Index> vertex_neighbours(const Mesh& m, std::span<const std::uint32_t> faces_around, Index x) {
+  std::vector<Index> n;
+  for (std::uint32_t f : faces_around)
+    for (Index w : m.faces[f])
+      if (w != x) n.push_back(w);
+  std::sort(n.begin(), n.end());
+  n.erase(std::unique(n.begin(), n.end()), n.end());
+  return n;
+}
+
+// The link condition for collapsing edge uv: the vertices joined to both u and v are
+// exactly the opposite corners of the faces on the edge, so the collapse keeps a
+// 2-manifold.
+inline bool link_condition(const Mesh& m, std::span<const std::uint32_t> faces_of_u,
+                           std::span<const std::uint32_t> faces_of_v, std::span<const std::uint32_t> on_edge, Index u,
+                           Index v) {
+  std::vector<Index> opposite;
+  for (std::uint32_t g : on_edge)
+    for (Index w : m.faces[g])
+      if (w != u && w != v) opposite.push_back(w);
+  std::sort(opposite.begin(), opposite.end());
+  const std::vector<Index> nu = vertex_neighbours(m, faces_of_u, u), nv = vertex_neighbours(m, faces_of_v, v);
+  std::vector<Index> common;
+  std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
+  return common == opposite;
+}
+
+}  // namespace molsurf
