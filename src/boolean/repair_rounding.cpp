@@ -1,9 +1,11 @@
 #include "boolean/repair_rounding.hpp"
 
 #include <algorithm>
+#include <array>
 #include <unordered_map>
 
 #include "geometry/predicates.hpp"
+#include "geometry/triangle_intersection.hpp"
 #include "mesh/topology.hpp"
 
 namespace molsurf::boolean_engine {
@@ -28,22 +30,53 @@ bool strictly_between(const Vec3& a, const Vec3& x, const Vec3& b) {
 
 class Repairer {
  public:
-  Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source)
+  // Indexes only the faces that rounding can have touched: those with a rounded corner,
+  // and every face around their corners (what collapses, flips and crossing tests read).
+  Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
+           const std::vector<std::uint8_t>& rounded)
       : m_(m), operand_(operand), source_(source), alive_(m.faces.size(), 1) {
-    for (std::uint32_t f = 0; f < m.faces.size(); ++f) index_face(f);
+    std::vector<std::uint8_t> near(m.vertices.size(), 0);
+    for (const Triangle& t : m.faces)
+      if (rounded[t[0]] || rounded[t[1]] || rounded[t[2]])
+        for (Index v : t) near[v] = 1;
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f) {
+      const Triangle& t = m.faces[f];
+      if (near[t[0]] || near[t[1]] || near[t[2]]) {
+        index_face(f);
+        indexed_.push_back(f);
+      }
+    }
   }
 
-  std::size_t run() {
+  std::size_t run(const std::vector<std::uint8_t>& rounded) {
     for (int pass = 0; pass < 8; ++pass) {
       bool changed = false;
-      for (std::uint32_t f = 0; f < m_.faces.size(); ++f)
+      for (std::uint32_t f : candidates())
         if (alive_[f] && degenerate(m_, m_.faces[f])) changed |= repair(f);
       if (!changed) break;
     }
+    // Folds: a face with a rounded corner that crosses a face sharing a corner with it.
+    for (int pass = 0; pass < 8; ++pass) {
+      bool changed = false;
+      for (std::uint32_t f : candidates()) {
+        if (!alive_[f]) continue;
+        const Triangle& t = m_.faces[f];
+        if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
+        if (crosses_a_neighbour(f)) changed |= unfold(f);
+      }
+      if (!changed) break;
+    }
     std::size_t left = 0;
-    for (std::uint32_t f = 0; f < m_.faces.size(); ++f) left += alive_[f] && degenerate(m_, m_.faces[f]);
+    for (std::uint32_t f : candidates()) left += alive_[f] && degenerate(m_, m_.faces[f]);
     compact();
     return left;
+  }
+
+  // Indexed faces and faces added since (flips), in order.
+  std::vector<std::uint32_t> candidates() const {
+    std::vector<std::uint32_t> out = indexed_;
+    for (std::uint32_t f = first_added_; f < m_.faces.size(); ++f) out.push_back(f);
+    return out;
   }
 
  private:
@@ -83,6 +116,86 @@ class Repairer {
       if (strictly_between(m_.vertices[a], m_.vertices[c], m_.vertices[b])) return flip(f, a, b, c);
     }
     return false;
+  }
+
+  geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
+    Mesh probe;
+    std::array<Index, 6> ids{};
+    auto local = [&](Index global) {
+      for (Index i = 0; i < probe.vertices.size(); ++i)
+        if (ids[i] == global) return i;
+      ids[probe.vertices.size()] = global;
+      probe.vertices.push_back(m_.vertices[global]);
+      return static_cast<Index>(probe.vertices.size() - 1);
+    };
+    Triangle la{}, lb{};
+    for (int i = 0; i < 3; ++i) la[i] = local(a[i]);
+    for (int i = 0; i < 3; ++i) lb[i] = local(b[i]);
+    probe.faces = {la, lb};
+    return geometry::classify_triangle_pair(probe, 0, 1);
+  }
+
+  bool crosses_a_neighbour(std::uint32_t f) const {
+    for (Index v : m_.faces[f]) {
+      const auto it = vertex_faces_.find(v);
+      if (it == vertex_faces_.end()) continue;
+      for (std::uint32_t g : it->second)
+        if (g != f && alive_[g] && relation(m_.faces[f], m_.faces[g]) == geometry::TrianglePairRelation::intersecting)
+          return true;
+    }
+    return false;
+  }
+
+  // Collapses an edge of face f, shortest first, when the faces then around the kept
+  // vertex turn none over and cross nothing around them (exact).
+  bool unfold(std::uint32_t f) {
+    const Triangle t = m_.faces[f];
+    std::array<std::pair<double, int>, 3> edges;
+    for (int i = 0; i < 3; ++i) edges[i] = {norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]), i};
+    std::sort(edges.begin(), edges.end());
+    for (const auto& [length, i] : edges)
+      for (bool keep_first : {true, false}) {
+        const Index u = keep_first ? t[i] : t[(i + 1) % 3], v = keep_first ? t[(i + 1) % 3] : t[i];
+        if (checked_collapse(u, v)) return true;
+      }
+    return false;
+  }
+
+  bool checked_collapse(Index u, Index v) {
+    const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
+    if (on_edge.size() != 2 || !link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
+    // The faces around v that move to u must keep their side (no turned-over face).
+    for (std::uint32_t g : vertex_faces_[v]) {
+      if (std::find(on_edge.begin(), on_edge.end(), g) != on_edge.end()) continue;
+      Triangle moved = m_.faces[g];
+      for (Index& w : moved)
+        if (w == v) w = u;
+      const Vec3 &a = m_.vertices[moved[0]], &b = m_.vertices[moved[1]], &c = m_.vertices[moved[2]];
+      const Triangle& old = m_.faces[g];
+      const Vec3 n_old = cross(m_.vertices[old[1]] - m_.vertices[old[0]], m_.vertices[old[2]] - m_.vertices[old[0]]);
+      if (geometry::collinear3d(a, b, c) || !(dot(cross(b - a, c - a), n_old) > 0)) return false;
+    }
+    // Collapse, then keep it only if nothing around u crosses; otherwise put the faces
+    // back (rare: a full re-index is fine).
+    std::vector<std::pair<std::uint32_t, Triangle>> undo;
+    for (std::uint32_t g : vertex_faces_[v]) undo.emplace_back(g, m_.faces[g]);
+    if (!collapse(u, v)) return false;
+    bool crossing = false;
+    for (std::uint32_t g : vertex_faces_[u]) crossing = crossing || crosses_a_neighbour(g);
+    if (!crossing) return true;
+    for (const auto& [g, tri] : undo) {
+      m_.faces[g] = tri;
+      alive_[g] = 1;
+    }
+    rebuild_index();
+    return false;
+  }
+
+  void rebuild_index() {
+    edge_faces_.clear();
+    vertex_faces_.clear();
+    for (std::uint32_t f : candidates())
+      if (alive_[f]) index_face(f);
   }
 
   // Merges v into u (same position). Link condition: the vertices adjacent to both are
@@ -143,6 +256,8 @@ class Repairer {
   std::vector<std::uint8_t>& operand_;
   std::vector<std::uint32_t>& source_;
   std::vector<std::uint8_t> alive_;
+  std::vector<std::uint32_t> indexed_;
+  std::uint32_t first_added_ = static_cast<std::uint32_t>(m_.faces.size());
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_faces_;
   std::unordered_map<Index, std::vector<std::uint32_t>> vertex_faces_;
 };
@@ -150,17 +265,8 @@ class Repairer {
 }  // namespace
 
 std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
-                            std::vector<std::uint32_t>& face_source) {
-  // Only a face whose corners include a rounded point can have become degenerate; most
-  // results have none, and then nothing is indexed at all.
-  bool any = false;
-  for (const Triangle& t : mesh.faces)
-    if (degenerate(mesh, t)) {
-      any = true;
-      break;
-    }
-  if (!any) return 0;
-  return Repairer(mesh, face_operand, face_source).run();
+                            std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded) {
+  return Repairer(mesh, face_operand, face_source, rounded).run(rounded);
 }
 
 }  // namespace molsurf::boolean_engine

@@ -7,7 +7,11 @@
 //  - a zero-length edge is collapsed (its two faces vanish) when the link condition holds,
 //    so the mesh stays a 2-manifold;
 //  - a face whose corner lies strictly inside the opposite edge is removed by flipping that
-//    edge with the neighbouring face, whose plane both new faces then share.
+//    edge with the neighbouring face, whose plane both new faces then share;
+//  - a face with a rounded corner that crosses a face sharing a corner with it (two points
+//    an ulp or so apart, joined by an edge, can fold a sliver over its neighbour) loses
+//    its shortest edge that can be collapsed with the link condition, no face turned over
+//    and no crossing left around the kept vertex (all exact).
 #include <cstdint>
 #include <vector>
 
@@ -16,7 +20,9 @@
 namespace molsurf::boolean_engine {
 
 
-// Returns the number of faces still degenerate afterwards (0 unless a repair was blocked).
-std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand, std::vector<std::uint32_t>& face_source);
+// `rounded[v]`: vertex v is a rounded intersection point (the only places rounding can
+// fold). Returns the number of faces still degenerate afterwards (0 unless blocked).
+std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand, std::vector<std::uint32_t>& face_source,
+                            const std::vector<std::uint8_t>& rounded);
 
 }  // namespace molsurf::boolean_engine

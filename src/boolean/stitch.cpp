@@ -273,7 +273,9 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
     r.face_source.push_back(source);
     if (tagged) r.mesh.face_tags.push_back(ops.mesh(operand).tag(source));
   }
-  repair_rounding(r.mesh, r.face_operand, r.face_source);
+  std::vector<std::uint8_t> rounded(point_of_vertex.size());
+  for (std::size_t v = 0; v < rounded.size(); ++v) rounded[v] = !arr.points[point_of_vertex[v]].is_explicit();
+  repair_rounding(r.mesh, r.face_operand, r.face_source, rounded);
   r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
   // Collapses leave vertices no face uses: renumber in order of first use.
   std::vector<Index> renumber(r.mesh.vertices.size(), ~Index{0});
