@@ -13,12 +13,19 @@
 namespace molsurf {
 
 std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
+  // One pass over the faces; volume relative to the mesh's box centre (as signed_volume).
   const Components parts = connected_components(mesh);
-  std::vector<Mesh> pieces(parts.count);
-  for (Mesh& p : pieces) p.vertices = mesh.vertices;  // shared coordinates: volume needs them
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) pieces[parts.face_component[f]].faces.push_back(mesh.faces[f]);
-  std::vector<ComponentMeasure> out;
-  for (const Mesh& p : pieces) out.push_back({p.faces.size(), surface_area(p), signed_volume(p)});
+  const BoundingBox box = bounding_box(mesh);
+  const Vec3 origin = 0.5 * (box.min + box.max);
+  std::vector<ComponentMeasure> out(parts.count);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    ComponentMeasure& c = out[parts.face_component[f]];
+    const Triangle& t = mesh.faces[f];
+    const Vec3 a = mesh.vertices[t[0]] - origin, b = mesh.vertices[t[1]] - origin, d = mesh.vertices[t[2]] - origin;
+    ++c.faces;
+    c.area += face_area(mesh, f);
+    c.volume += dot(a, cross(b, d)) / 6;
+  }
   std::stable_sort(out.begin(), out.end(), [](const ComponentMeasure& a, const ComponentMeasure& b) {
     if (a.cavity() != b.cavity()) return !a.cavity();
     return a.area > b.area;
