@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh_check.hpp"
@@ -74,7 +75,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
   app.add_flag("--no-cleanup", skip_cleanup,
                "Skip the surface improvement (paper 2.5: collapse of slivers under 5 degrees)")
       ->group(output_group);
-  app.add_flag("--no-check", skip_check, "Do not re-check the written surface (closed, manifold, no self-intersection)")
+  app.add_flag("--no-check", skip_check,
+               "Skip the exact self-intersection test of the surface before it is written (closed and\n"
+               "manifold are still checked); by default a surface that fails is not written")
       ->group(output_group);
   app.add_option("--threads", threads, "Threads for the union (default: all cores); the result does not depend on it")
       ->check(CLI::NonNegativeNumber);
@@ -151,6 +154,13 @@ int SurfaceCommand::run() const {
   check_options.self_intersections = !skip_check;
   const MeshCheck check = check_mesh(surface, check_options);
   report.seconds.check = seconds_since(clock);
+  if (!check.valid()) {
+    // The promise is a valid surface or none: nothing is written.
+    std::string why;
+    for (const std::string& d : check.defects()) why += "\n  - " + d;
+    throw Error(out.string() + ": not written: the computed surface failed its check (a molsurf bug; please "
+                "report it with the input file and options):" + why);
+  }
 
   clock = std::chrono::steady_clock::now();
   MeshWriteOptions write_options;
@@ -180,11 +190,6 @@ int SurfaceCommand::run() const {
   report.outer_only = outer_only;
   if (!json.empty()) write_file_atomically(json, surface_report_json(report));
   if (!quiet) std::cout << "\n" << format_surface_report(report);
-  if (!report.valid) {
-    std::cerr << "molsurf: error: the surface written to " << out.string()
-              << " failed its check (see above); please report this with the input file\n";
-    return 1;
-  }
   return 0;
 }
 
