@@ -1,7 +1,9 @@
 #include "boolean/repair_rounding.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 #include <array>
+#include <cmath>
 #include <unordered_map>
 
 #include "geometry/predicates.hpp"
@@ -35,9 +37,13 @@ class Repairer {
   Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
            const std::vector<std::uint8_t>& rounded)
       : m_(m), operand_(operand), source_(source), alive_(m.faces.size(), 1) {
-    std::vector<std::uint8_t> near(m.vertices.size(), 0);
+    // Two rings around the rounded faces: the crossing test of a sliver reads its 2-ring.
+    std::vector<std::uint8_t> near(m.vertices.size(), 0), nearer(m.vertices.size(), 0);
     for (const Triangle& t : m.faces)
       if (rounded[t[0]] || rounded[t[1]] || rounded[t[2]])
+        for (Index v : t) nearer[v] = 1;
+    for (const Triangle& t : m.faces)
+      if (nearer[t[0]] || nearer[t[1]] || nearer[t[2]])
         for (Index v : t) near[v] = 1;
     for (std::uint32_t f = 0; f < m.faces.size(); ++f) {
       const Triangle& t = m.faces[f];
@@ -135,15 +141,38 @@ class Repairer {
     return geometry::classify_triangle_pair(probe, 0, 1);
   }
 
+  // Crossing a face that shares a corner with f; for a sliver (smallest angle under 0.1
+  // degree: rounding can turn it over) also a face two rings away. The angle only selects
+  // what is tested; the test itself is exact.
   bool crosses_a_neighbour(std::uint32_t f) const {
-    for (Index v : m_.faces[f]) {
-      const auto it = vertex_faces_.find(v);
-      if (it == vertex_faces_.end()) continue;
-      for (std::uint32_t g : it->second)
-        if (g != f && alive_[g] && relation(m_.faces[f], m_.faces[g]) == geometry::TrianglePairRelation::intersecting)
-          return true;
+    const Triangle& t = m_.faces[f];
+    const bool sliver = smallest_angle_deg(t) < 0.1;
+    std::vector<std::uint32_t> ring;
+    auto faces_around = [&](Index v, std::vector<std::uint32_t>& out) {
+      if (const auto it = vertex_faces_.find(v); it != vertex_faces_.end())
+        out.insert(out.end(), it->second.begin(), it->second.end());
+    };
+    for (Index v : t) faces_around(v, ring);
+    if (sliver) {
+      const std::size_t first_ring = ring.size();
+      for (std::size_t k = 0; k < first_ring; ++k)
+        for (Index v : m_.faces[ring[k]]) faces_around(v, ring);
     }
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    for (std::uint32_t g : ring)
+      if (g != f && alive_[g] && relation(t, m_.faces[g]) == geometry::TrianglePairRelation::intersecting) return true;
     return false;
+  }
+
+  double smallest_angle_deg(const Triangle& t) const {
+    double smallest = 180;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& p = m_.vertices[t[i]];
+      const Vec3 u = m_.vertices[t[(i + 1) % 3]] - p, w = m_.vertices[t[(i + 2) % 3]] - p;
+      smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)) * 57.29577951308232);
+    }
+    return smallest;
   }
 
   // Collapses an edge of face f, shortest first, when the faces then around the kept
@@ -161,28 +190,50 @@ class Repairer {
     return false;
   }
 
+  // Crossing pairs among the faces around the given vertices and their neighbours (exact).
+  std::size_t crossings_around(std::initializer_list<Index> centres) const {
+    std::vector<std::uint32_t> faces;
+    for (Index c : centres)
+      if (const auto it = vertex_faces_.find(c); it != vertex_faces_.end())
+        for (std::uint32_t g : it->second)
+          for (Index w : m_.faces[g])
+            if (const auto jt = vertex_faces_.find(w); jt != vertex_faces_.end())
+              faces.insert(faces.end(), jt->second.begin(), jt->second.end());
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (std::size_t j = i + 1; j < faces.size(); ++j)
+        if (alive_[faces[i]] && alive_[faces[j]] &&
+            relation(m_.faces[faces[i]], m_.faces[faces[j]]) == geometry::TrianglePairRelation::intersecting)
+          ++count;
+    return count;
+  }
+
+  // A collapse that leaves fewer crossings around it than there were (exactly counted);
+  // clusters of near-coincident points clear over several passes.
   bool checked_collapse(Index u, Index v) {
     const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
     if (on_edge.size() != 2 || !link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
-    // The faces around v that move to u must keep their side (no turned-over face).
+    // A real face moving to u must not turn over; a sliver (rounding may already have
+    // turned it) is judged by the crossing count alone.
     for (std::uint32_t g : vertex_faces_[v]) {
       if (std::find(on_edge.begin(), on_edge.end(), g) != on_edge.end()) continue;
       Triangle moved = m_.faces[g];
       for (Index& w : moved)
         if (w == v) w = u;
       const Vec3 &a = m_.vertices[moved[0]], &b = m_.vertices[moved[1]], &c = m_.vertices[moved[2]];
+      if (geometry::collinear3d(a, b, c)) return false;
       const Triangle& old = m_.faces[g];
+      if (smallest_angle_deg(old) < 0.1) continue;
       const Vec3 n_old = cross(m_.vertices[old[1]] - m_.vertices[old[0]], m_.vertices[old[2]] - m_.vertices[old[0]]);
-      if (geometry::collinear3d(a, b, c) || !(dot(cross(b - a, c - a), n_old) > 0)) return false;
+      if (!(dot(cross(b - a, c - a), n_old) > 0)) return false;
     }
-    // Collapse, then keep it only if nothing around u crosses; otherwise put the faces
-    // back (rare: a full re-index is fine).
+    const std::size_t before = crossings_around({u, v});
     std::vector<std::pair<std::uint32_t, Triangle>> undo;
     for (std::uint32_t g : vertex_faces_[v]) undo.emplace_back(g, m_.faces[g]);
     if (!collapse(u, v)) return false;
-    bool crossing = false;
-    for (std::uint32_t g : vertex_faces_[u]) crossing = crossing || crosses_a_neighbour(g);
-    if (!crossing) return true;
+    if (crossings_around({u}) < before) return true;
     for (const auto& [g, tri] : undo) {
       m_.faces[g] = tri;
       alive_[g] = 1;
