@@ -7,6 +7,7 @@
 #include "mesh_fixtures.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/icosphere.hpp"
+#include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/shapes.hpp"
 
@@ -145,6 +146,17 @@ TEST(Boolean, TunnelTouchingTheOuterFaceAlongAnEdge) {
   const Volumes v = run_all(cube, prism);
   EXPECT_NEAR(v.uni, 64 + 4, 1e-12);
   EXPECT_NEAR(v.inter, 8, 1e-12);
+}
+
+TEST(Boolean, RoundingFoldAtANearTripleJunction) {
+  // Two partial surfaces from 7cth's merge tree (level 5) whose union has four intersection
+  // points within 1e-7 A of each other: rounding folded slivers there until the repair
+  // learned to clear such clusters.
+  const std::string dir = std::string(MOLSURF_DATA_DIR) + "/../tests/data/boolean/";
+  const Mesh a = read_mesh(dir + "7cth_level5_a.ply"), b = read_mesh(dir + "7cth_level5_b.ply");
+  ASSERT_TRUE(valid(a));
+  ASSERT_TRUE(valid(b));
+  EXPECT_TRUE(valid(boolean(a, b, BooleanOp::union_).mesh));
 }
 
 }  // namespace
