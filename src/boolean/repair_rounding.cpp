@@ -14,6 +14,21 @@ namespace molsurf::boolean_engine {
 
 namespace {
 
+// Faces whose smallest angle is below this are slivers: the only faces that rounding to
+// doubles (an error of about 1e-16 relative) can turn over. It selects which faces get the
+// exact crossing test; it decides nothing.
+constexpr double kSliverDeg = 0.1;
+
+double smallest_angle_of(const Mesh& m, const Triangle& t) {
+  double smallest = 180;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p = m.vertices[t[i]];
+    const Vec3 u = m.vertices[t[(i + 1) % 3]] - p, w = m.vertices[t[(i + 2) % 3]] - p;
+    smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)) * 57.29577951308232);
+  }
+  return smallest;
+}
+
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
 bool degenerate(const Mesh& m, const Triangle& t) {
@@ -68,6 +83,7 @@ class Repairer {
         if (!alive_[f]) continue;
         const Triangle& t = m_.faces[f];
         if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
+        if (smallest_angle_deg(t) >= kSliverDeg) continue;  // rounding (~1e-16) cannot turn it over
         if (crosses_a_neighbour(f)) changed |= unfold(f);
       }
       if (!changed) break;
@@ -125,7 +141,9 @@ class Repairer {
   }
 
   geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
-    Mesh probe;
+    // A two-face mesh reused for every test: the exact pair test reads shared indices.
+    Mesh& probe = probe_;
+    probe.vertices.clear();
     std::array<Index, 6> ids{};
     auto local = [&](Index global) {
       for (Index i = 0; i < probe.vertices.size(); ++i)
@@ -137,7 +155,7 @@ class Repairer {
     Triangle la{}, lb{};
     for (int i = 0; i < 3; ++i) la[i] = local(a[i]);
     for (int i = 0; i < 3; ++i) lb[i] = local(b[i]);
-    probe.faces = {la, lb};
+    probe.faces.assign({la, lb});
     return geometry::classify_triangle_pair(probe, 0, 1);
   }
 
@@ -146,7 +164,7 @@ class Repairer {
   // what is tested; the test itself is exact.
   bool crosses_a_neighbour(std::uint32_t f) const {
     const Triangle& t = m_.faces[f];
-    const bool sliver = smallest_angle_deg(t) < 0.1;
+    const bool sliver = smallest_angle_deg(t) < kSliverDeg;
     std::vector<std::uint32_t> ring;
     auto faces_around = [&](Index v, std::vector<std::uint32_t>& out) {
       if (const auto it = vertex_faces_.find(v); it != vertex_faces_.end())
@@ -165,15 +183,7 @@ class Repairer {
     return false;
   }
 
-  double smallest_angle_deg(const Triangle& t) const {
-    double smallest = 180;
-    for (int i = 0; i < 3; ++i) {
-      const Vec3& p = m_.vertices[t[i]];
-      const Vec3 u = m_.vertices[t[(i + 1) % 3]] - p, w = m_.vertices[t[(i + 2) % 3]] - p;
-      smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)) * 57.29577951308232);
-    }
-    return smallest;
-  }
+  double smallest_angle_deg(const Triangle& t) const { return smallest_angle_of(m_, t); }
 
   // Collapses an edge of face f, shortest first, when the faces then around the kept
   // vertex turn none over and cross nothing around them (exact).
@@ -225,7 +235,7 @@ class Repairer {
       const Vec3 &a = m_.vertices[moved[0]], &b = m_.vertices[moved[1]], &c = m_.vertices[moved[2]];
       if (geometry::collinear3d(a, b, c)) return false;
       const Triangle& old = m_.faces[g];
-      if (smallest_angle_deg(old) < 0.1) continue;
+      if (smallest_angle_deg(old) < kSliverDeg) continue;
       const Vec3 n_old = cross(m_.vertices[old[1]] - m_.vertices[old[0]], m_.vertices[old[2]] - m_.vertices[old[0]]);
       if (!(dot(cross(b - a, c - a), n_old) > 0)) return false;
     }
@@ -307,6 +317,7 @@ class Repairer {
   std::vector<std::uint8_t>& operand_;
   std::vector<std::uint32_t>& source_;
   std::vector<std::uint8_t> alive_;
+  mutable Mesh probe_;
   std::vector<std::uint32_t> indexed_;
   std::uint32_t first_added_ = static_cast<std::uint32_t>(m_.faces.size());
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_faces_;
@@ -317,6 +328,17 @@ class Repairer {
 
 std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
                             std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded) {
+  // Most results have no degenerate face and no sliver at a rounded point: then nothing
+  // is indexed at all.
+  bool any = false;
+  for (const Triangle& t : mesh.faces) {
+    if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
+    if (degenerate(mesh, t) || smallest_angle_of(mesh, t) < kSliverDeg) {
+      any = true;
+      break;
+    }
+  }
+  if (!any) return 0;
   return Repairer(mesh, face_operand, face_source, rounded).run(rounded);
 }
 

@@ -110,7 +110,9 @@ class Collapser {
 
   // Exact relation of two faces of the mesh (shared vertex indices are what they may share).
   geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
-    Mesh probe;
+    // A two-face mesh reused for every test: the exact pair test reads shared indices.
+    Mesh& probe = probe_;
+    probe.vertices.clear();
     Triangle local_a{}, local_b{};
     auto local = [&](Index global) {
       for (Index i = 0; i < probe.vertices.size(); ++i)
@@ -121,7 +123,7 @@ class Collapser {
     };
     for (int i = 0; i < 3; ++i) local_a[i] = local(a[i]);
     for (int i = 0; i < 3; ++i) local_b[i] = local(b[i]);
-    probe.faces = {local_a, local_b};
+    probe.faces.assign({local_a, local_b});
     return geometry::classify_triangle_pair(probe, 0, 1);
   }
 
@@ -348,6 +350,7 @@ class Collapser {
   std::vector<std::vector<std::uint32_t>> faces_of_;
   std::unique_ptr<FaceGrid> grid_;
   mutable std::array<Index, 6> probe_ids_{};
+  mutable Mesh probe_;
   double area_budget_ = 0, area_drift_ = 0;
   std::size_t flips_ = 0;
 };
