@@ -141,22 +141,7 @@ class Repairer {
   }
 
   geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
-    // A two-face mesh reused for every test: the exact pair test reads shared indices.
-    Mesh& probe = probe_;
-    probe.vertices.clear();
-    std::array<Index, 6> ids{};
-    auto local = [&](Index global) {
-      for (Index i = 0; i < probe.vertices.size(); ++i)
-        if (ids[i] == global) return i;
-      ids[probe.vertices.size()] = global;
-      probe.vertices.push_back(m_.vertices[global]);
-      return static_cast<Index>(probe.vertices.size() - 1);
-    };
-    Triangle la{}, lb{};
-    for (int i = 0; i < 3; ++i) la[i] = local(a[i]);
-    for (int i = 0; i < 3; ++i) lb[i] = local(b[i]);
-    probe.faces.assign({la, lb});
-    return geometry::classify_triangle_pair(probe, 0, 1);
+    return geometry::classify_triangle_pair(m_, a, b, probe_);
   }
 
   // Crossing a face that shares a corner with f; for a sliver (smallest angle under 0.1

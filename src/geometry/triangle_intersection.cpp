@@ -222,4 +222,23 @@ TrianglePairRelation classify_triangle_pair(const Mesh& mesh, std::size_t face_i
   }
 }
 
+TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& a, const Triangle& b, Mesh& scratch) {
+  // Copy the (up to six) corners, keeping shared indices shared: they say what the two
+  // triangles may have in common.
+  scratch.vertices.clear();
+  std::array<Index, 6> ids{};
+  auto local = [&](Index global) {
+    for (Index i = 0; i < scratch.vertices.size(); ++i)
+      if (ids[i] == global) return i;
+    ids[scratch.vertices.size()] = global;
+    scratch.vertices.push_back(mesh.vertices[global]);
+    return static_cast<Index>(scratch.vertices.size() - 1);
+  };
+  Triangle la{}, lb{};
+  for (int i = 0; i < 3; ++i) la[i] = local(a[i]);
+  for (int i = 0; i < 3; ++i) lb[i] = local(b[i]);
+  scratch.faces.assign({la, lb});
+  return classify_triangle_pair(scratch, 0, 1);
+}
+
 }  // namespace molsurf::geometry

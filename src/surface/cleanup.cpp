@@ -108,23 +108,9 @@ class Collapser {
     return smallest_angle(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
   }
 
-  // Exact relation of two faces of the mesh (shared vertex indices are what they may share).
+  // Exact relation of two triangles of the mesh (shared indices are what they may share).
   geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
-    // A two-face mesh reused for every test: the exact pair test reads shared indices.
-    Mesh& probe = probe_;
-    probe.vertices.clear();
-    Triangle local_a{}, local_b{};
-    auto local = [&](Index global) {
-      for (Index i = 0; i < probe.vertices.size(); ++i)
-        if (probe_ids_[i] == global) return i;
-      probe_ids_[probe.vertices.size()] = global;
-      probe.vertices.push_back(m_.vertices[global]);
-      return static_cast<Index>(probe.vertices.size() - 1);
-    };
-    for (int i = 0; i < 3; ++i) local_a[i] = local(a[i]);
-    for (int i = 0; i < 3; ++i) local_b[i] = local(b[i]);
-    probe.faces.assign({local_a, local_b});
-    return geometry::classify_triangle_pair(probe, 0, 1);
+    return geometry::classify_triangle_pair(m_, a, b, probe_);
   }
 
   bool on_seam(Index v) const {
@@ -349,7 +335,6 @@ class Collapser {
   std::vector<std::uint8_t> alive_;
   std::vector<std::vector<std::uint32_t>> faces_of_;
   std::unique_ptr<FaceGrid> grid_;
-  mutable std::array<Index, 6> probe_ids_{};
   mutable Mesh probe_;
   double area_budget_ = 0, area_drift_ = 0;
   std::size_t flips_ = 0;
