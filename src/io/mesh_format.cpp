@@ -86,6 +86,14 @@ void append_number(std::string& out, double value) {
   out.append(buffer, result.ptr);
 }
 
+void append_point(std::string& out, const Vec3& p) {
+  append_number(out, p.x);
+  out += ' ';
+  append_number(out, p.y);
+  out += ' ';
+  append_number(out, p.z);
+}
+
 void append_number(std::string& out, float value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);

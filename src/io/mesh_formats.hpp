@@ -46,6 +46,8 @@ std::string read_file_bytes(const path& file);
 // Shortest text that parses back to exactly the same double (or float).
 void append_number(std::string& out, double value);
 void append_number(std::string& out, float value);
+// "x y z" (shortest round-trip numbers, no newline).
+void append_point(std::string& out, const Vec3& p);
 
 // Splits on blanks (space, tab, CR).
 std::vector<std::string_view> split_fields(std::string_view line);

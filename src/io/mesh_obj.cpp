@@ -12,11 +12,7 @@ void write_obj(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
   text.reserve(mesh.vertex_count() * 110 + mesh.face_count() * 40 + 64);
   const auto append_vector = [&text](const char* keyword, const Vec3& p) {
     text += keyword;
-    append_number(text, p.x);
-    text += ' ';
-    append_number(text, p.y);
-    text += ' ';
-    append_number(text, p.z);
+    append_point(text, p);
     text += '\n';
   };
   for (const Vec3& p : mesh.vertices) append_vector("v ", p);

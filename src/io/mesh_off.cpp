@@ -13,11 +13,7 @@ void write_off(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
                      std::to_string(mesh.face_count()) + " 0\n";
   text.reserve(text.size() + mesh.vertex_count() * 60 + mesh.face_count() * 24);
   for (const Vec3& p : mesh.vertices) {
-    append_number(text, p.x);
-    text += ' ';
-    append_number(text, p.y);
-    text += ' ';
-    append_number(text, p.z);
+    append_point(text, p);
     text += '\n';
   }
   for (const Triangle& t : mesh.faces)

@@ -51,16 +51,10 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
   bool has_default = false;
   std::size_t line_number = 0;
   std::size_t entries = 0;
-  std::string_view rest = text;
-  while (!rest.empty()) {
-    const std::size_t end = rest.find('\n');
-    std::string_view line = rest.substr(0, end);
-    rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
-    ++line_number;
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const std::vector<std::string_view> fields = detail::split_fields(line);
-    if (fields.empty()) continue;
+  detail::DataLines lines(text);
+  while (lines.next()) {
+    line_number = lines.line_number();
+    const std::vector<std::string_view>& fields = lines.fields();
 
     const std::string kind = upper(fields[0]);
     const auto expect_fields = [&](std::size_t count, const char* form) {

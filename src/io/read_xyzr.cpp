@@ -13,16 +13,10 @@ std::vector<Atom> read_xyzr(const std::filesystem::path& path) {
   const std::string text = read_text_file(path);
   std::vector<Atom> atoms;
   std::size_t line_number = 0;
-  std::string_view rest = text;
-  while (!rest.empty()) {
-    const std::size_t end = rest.find('\n');
-    std::string_view line = rest.substr(0, end);
-    rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
-    ++line_number;
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const std::vector<std::string_view> fields = split_fields(line);
-    if (fields.empty()) continue;
+  DataLines lines(text);
+  while (lines.next()) {
+    line_number = lines.line_number();
+    const std::vector<std::string_view>& fields = lines.fields();
     if (fields.size() < 4)
       fail(path, line_number,
            "expected 'x y z r [name]', found " + std::to_string(fields.size()) + " field" +

@@ -33,6 +33,32 @@ std::vector<Atom> read_xyzr(const std::filesystem::path& path);
 
 // Small text helpers shared by the PQR, xyzr and radius-table parsers.
 std::vector<std::string_view> split_fields(std::string_view line);  // on spaces and tabs
+
+// The data lines of a whitespace-separated text file: '#' starts a comment, blank lines
+// are skipped, and line numbers (1-based) are kept for error messages.
+class DataLines {
+ public:
+  explicit DataLines(std::string_view text) : rest_(text) {}
+  bool next() {
+    while (!rest_.empty()) {
+      const std::size_t end = rest_.find('\n');
+      std::string_view line = rest_.substr(0, end);
+      rest_.remove_prefix(end == std::string_view::npos ? rest_.size() : end + 1);
+      ++line_number_;
+      if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      fields_ = split_fields(line);
+      if (!fields_.empty()) return true;
+    }
+    return false;
+  }
+  std::size_t line_number() const { return line_number_; }
+  const std::vector<std::string_view>& fields() const { return fields_; }
+
+ private:
+  std::string_view rest_;
+  std::size_t line_number_ = 0;
+  std::vector<std::string_view> fields_;
+};
 std::optional<double> parse_double(std::string_view field);  // whole field, finite, '+' allowed
 std::optional<int> parse_int(std::string_view field);        // whole field
 
