@@ -23,12 +23,15 @@ struct BooleanTimings {  // seconds per step of the paper
 
 struct BooleanStats {
   std::size_t faces_a = 0, faces_b = 0;
+  std::size_t active_faces = 0;        // faces that overlap the other operand's box
+  std::size_t whole_reruns = 0;        // 1: a rounding repair needed the whole operands
   std::size_t candidate_pairs = 0;     // face pairs whose boxes overlap
   std::size_t intersecting_pairs = 0;  // pairs that share at least one point
   std::size_t coplanar_pairs = 0;
   std::size_t intersection_points = 0;
   std::size_t split_faces = 0;         // faces re-triangulated
-  std::size_t exact_ray_casts = 0;     // patches classified by an exact ray
+  std::size_t ray_casts = 0;           // patches classified by a ray (others by seeds, crossings)
+  std::size_t exact_ray_casts = 0;     // of those, rays from an exact rational point
   std::size_t split_vertices = 0;      // vertices duplicated where solids only touch
   std::size_t output_faces = 0;
   BooleanTimings seconds;

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "molsurf/atoms.hpp"
+#include "molsurf/boolean.hpp"
 #include "molsurf/mesh.hpp"
 
 namespace molsurf {
@@ -35,8 +36,10 @@ struct SpherePlan {
 SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& options);
 
 // The solvent-accessible surface: the union of all atoms' spheres, by hierarchical pairwise
-// mesh union. Atoms are ordered along a Morton (Z-order) curve of their centres, so
-// neighbours in the order are neighbours in space; each level of the merge tree joins
+// mesh union. The merge tree is a k-d tree over the atom centres: each node's atoms are
+// split by a plane across their longest extent, so two merged halves meet only in a slab
+// around that plane, and a merge costs in proportion to that slab (the Boolean only works
+// on faces in the overlap of the operands' boxes). Each level of the tree joins
 // consecutive pairs of the level below, the merges of a level in parallel (OpenMP), and a
 // merge frees its operands. Spheres are built when their first merge runs. The result
 // does not depend on the number of threads.
@@ -52,9 +55,20 @@ struct SurfaceTimings {  // seconds
   double total = 0;
 };
 
+// One level of the merge tree: where the time goes (step times are summed over the
+// level's merges, so they are CPU seconds when merges run in parallel).
+struct SurfaceLevel {
+  std::size_t merges = 0;
+  std::size_t faces_in = 0, active_faces = 0, faces_out = 0;
+  std::size_t split_faces = 0, ray_casts = 0, whole_reruns = 0;
+  BooleanTimings steps;
+  double seconds = 0;  // wall
+};
+
 struct SurfaceResult {
   Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
   std::size_t merges = 0, levels = 0;
+  std::vector<SurfaceLevel> level_stats;  // bottom (sphere pairs) first
   SurfaceTimings seconds;
 };
 

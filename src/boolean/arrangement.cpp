@@ -51,8 +51,9 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   arr.edge_points.resize(ops.edge_count());
   arr.face_points.resize(ops.face_count());
   arr.face_segments.resize(ops.face_count());
+  arr.transversal_segments.resize(ops.face_count());
   arr.coplanar_partners.resize(ops.face_count());
-  std::vector<std::uint32_t> on_both;
+  std::vector<std::uint32_t> on_both, touch;
   auto place = [&](std::uint32_t face, const Location& loc, std::uint32_t id) {
     if (loc.where == Where::edge)
       arr.edge_points[ops.face_edges(face)[loc.index]].push_back(id);
@@ -64,13 +65,16 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
     for (const PairPoint& p : pair.points) {
       const std::uint32_t id = point_id(p.key);
       on_both.push_back(id);
+      if (p.key.kind != PointKind::edge_face) touch.push_back(id);
       place(pair.face_a, p.on_a, id);
       place(pair.face_b, p.on_b, id);
     }
     auto add_segments = [&](std::uint32_t face, const auto& segments) {
       for (const auto& [k1, k2] : segments) {
         const std::uint32_t i = point_id(k1), j = point_id(k2);
-        if (i != j) arr.face_segments[face].emplace_back(std::min(i, j), std::max(i, j));
+        if (i == j) continue;
+        arr.face_segments[face].emplace_back(std::min(i, j), std::max(i, j));
+        if (pair.transversal) arr.transversal_segments[face].emplace_back(std::min(i, j), std::max(i, j));
       }
     };
     add_segments(pair.face_a, pair.segments_a);
@@ -83,8 +87,14 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   arr.intersection_point_count = id_of_key.size();
   arr.on_both_surfaces.assign(arr.points.size(), 0);
   for (std::uint32_t id : on_both) arr.on_both_surfaces[id] = 1;
+  arr.may_touch.assign(arr.points.size(), 0);
+  for (std::uint32_t id : touch) arr.may_touch[id] = 1;
   for (auto& list : arr.edge_points) sort_unique(list);
   for (auto& list : arr.face_points) sort_unique(list);
+  for (auto& list : arr.transversal_segments) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
   for (auto& list : arr.face_segments) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());

@@ -17,9 +17,15 @@ struct Arrangement {
   std::vector<geometry::ImplicitPoint> points;
   std::vector<std::uint32_t> vertex_point;      // combined vertex -> point id
   std::vector<std::uint8_t> on_both_surfaces;   // per point: found on a face of each operand
+  // Per point: on both surfaces and not a transversal edge-face crossing (an input vertex
+  // on the other surface, or two edges crossing). Only there can the solids touch without
+  // crossing: around a transversal crossing the result is always one sheet.
+  std::vector<std::uint8_t> may_touch;
   std::vector<std::vector<std::uint32_t>> edge_points;  // per combined edge: points strictly inside it
   std::vector<std::vector<std::uint32_t>> face_points;  // per combined face: points strictly inside it
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> face_segments;  // constraints
+  // The constraints of each face that come from transversal crossings (a subset).
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> transversal_segments;
   struct Partner {
     std::uint32_t face;
     bool same_orientation;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "boolean/active_part.hpp"
 #include "boolean/arrangement.hpp"
 #include "boolean/classify.hpp"
 #include "boolean/cull.hpp"
@@ -39,18 +40,17 @@ class StepTimer {
 
 }  // namespace
 
-BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
-  using namespace boolean_engine;
-  BooleanResult result;
-  BooleanStats& stats = result.stats;
-  stats.faces_a = a.faces.size();
-  stats.faces_b = b.faces.size();
-  StepTimer timer;
+namespace {
 
-  const Operands operands(a, b);
+// The five steps on parts of the solids a and b (or on the solids themselves).
+using namespace boolean_engine;
+
+StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, const Mesh& b, BooleanOp op,
+                       BooleanStats& stats, StepTimer& timer) {
+  const Operands operands(part_a, part_b, a, b);
   const auto candidates = cull_face_pairs(operands);
   stats.candidate_pairs = candidates.size();
-  stats.seconds.cull = timer.lap();
+  stats.seconds.cull += timer.lap();
 
   std::vector<PairIntersection> pairs(candidates.size());
   const auto pair_count = static_cast<std::int64_t>(candidates.size());
@@ -59,26 +59,116 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
     pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second);
   std::erase_if(pairs, [](const PairIntersection& p) { return p.empty(); });
   stats.intersecting_pairs = pairs.size();
+  stats.coplanar_pairs = 0;
   for (const auto& p : pairs) stats.coplanar_pairs += p.coplanar;
   const Arrangement arrangement = build_arrangement(operands, pairs);
   stats.intersection_points = arrangement.intersection_point_count;
-  stats.seconds.intersect = timer.lap();
+  stats.seconds.intersect += timer.lap();
 
   const SplitResult split = split_faces(operands, arrangement);
   stats.split_faces = split.split_faces;
-  stats.seconds.split = timer.lap();
+  stats.seconds.split += timer.lap();
 
   const Classification classes = classify_sub_faces(operands, arrangement, split);
+  stats.ray_casts = classes.ray_casts;
   stats.exact_ray_casts = classes.exact_ray_casts;
-  stats.seconds.classify = timer.lap();
+  stats.seconds.classify += timer.lap();
 
   StitchResult stitched = stitch_sub_faces(operands, arrangement, split.sub_faces, classes.side, op);
   stats.split_vertices = stitched.split_vertices;
+  // Output vertices that are input vertices: the part vertex they are (a's, then b's).
+  for (std::uint32_t& p : stitched.vertex_point)
+    if (p >= operands.vertex_count()) p = ~0u;
+  stats.seconds.stitch += timer.lap();
+  return stitched;
+}
+
+void take_whole(BooleanResult& result, StitchResult&& stitched) {
   result.mesh = std::move(stitched.mesh);
   result.face_operand = std::move(stitched.face_operand);
   result.face_source = std::move(stitched.face_source);
-  stats.output_faces = result.mesh.faces.size();
-  stats.seconds.stitch = timer.lap();
+}
+
+}  // namespace
+
+BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
+  using namespace boolean_engine;
+  BooleanResult result;
+  BooleanStats& stats = result.stats;
+  stats.faces_a = a.faces.size();
+  stats.faces_b = b.faces.size();
+  StepTimer timer;
+
+  const ActivePart part[2] = {active_part(a, bounding_box(b)), active_part(b, bounding_box(a))};
+  stats.active_faces = (part[0].whole ? a.faces.size() : part[0].mesh.faces.size()) +
+                       (part[1].whole ? b.faces.size() : part[1].mesh.faces.size());
+  stats.seconds.cull += timer.lap();
+  if (part[0].whole && part[1].whole) {
+    take_whole(result, run_steps(a, b, a, b, op, stats, timer));
+    stats.output_faces = result.mesh.faces.size();
+    return result;
+  }
+  const Mesh* solid[2] = {&a, &b};
+  StitchResult stitched = run_steps(part[0].whole ? a : part[0].mesh, part[1].whole ? b : part[1].mesh, a, b, op,
+                                    stats, timer);
+  if (stitched.repair.refused_frozen > 0) {
+    // A rounding repair needed a vertex that the passive faces share: redo it whole.
+    stats.whole_reruns = 1;
+    stats.active_faces = a.faces.size() + b.faces.size();
+    take_whole(result, run_steps(a, b, a, b, op, stats, timer));
+    stats.output_faces = result.mesh.faces.size();
+    return result;
+  }
+
+  // Join the part's result with the passive faces: those of a are outside b (kept by
+  // union and difference), those of b outside a (kept by union only).
+  Mesh& out = result.mesh;
+  out = std::move(stitched.mesh);
+  result.face_operand = std::move(stitched.face_operand);
+  result.face_source = std::move(stitched.face_source);
+  for (std::size_t k = 0; k < result.face_source.size(); ++k) {
+    const ActivePart& p = part[result.face_operand[k]];
+    if (!p.whole) result.face_source[k] = p.face_origin[result.face_source[k]];
+  }
+  const bool keep_passive[2] = {op != BooleanOp::intersection, op == BooleanOp::union_};
+  constexpr std::uint32_t unmapped = ~std::uint32_t{0};
+  std::vector<std::uint32_t> out_vertex[2];
+  for (int operand = 0; operand < 2; ++operand)
+    if (keep_passive[operand] && !part[operand].passive_faces.empty())
+      out_vertex[operand].assign(solid[operand]->vertices.size(), unmapped);
+  const auto part_vertices_a =
+      static_cast<std::uint32_t>(part[0].whole ? a.vertices.size() : part[0].mesh.vertices.size());
+  for (std::uint32_t v = 0; v < stitched.vertex_point.size(); ++v) {
+    const std::uint32_t p = stitched.vertex_point[v];
+    if (p == ~0u) continue;
+    const int operand = p < part_vertices_a ? 0 : 1;
+    if (out_vertex[operand].empty()) continue;
+    const std::uint32_t local = operand == 0 ? p : p - part_vertices_a;
+    out_vertex[operand][part[operand].whole ? local : part[operand].vertex_origin[local]] = v;
+  }
+  const bool tagged = a.has_tags() || b.has_tags();
+  if (tagged && out.face_tags.size() != out.faces.size()) out.face_tags.resize(out.faces.size(), kNoTag);
+  for (int operand = 0; operand < 2; ++operand) {
+    if (!keep_passive[operand]) continue;
+    const Mesh& m = *solid[operand];
+    for (std::uint32_t f : part[operand].passive_faces) {
+      Triangle t = m.faces[f];
+      for (Index& v : t) {
+        std::uint32_t& mapped = out_vertex[operand][v];
+        if (mapped == unmapped) {
+          mapped = static_cast<std::uint32_t>(out.vertices.size());
+          out.vertices.push_back(m.vertices[v]);
+        }
+        v = mapped;
+      }
+      out.faces.push_back(t);
+      result.face_operand.push_back(static_cast<std::uint8_t>(operand));
+      result.face_source.push_back(f);
+      if (tagged) out.face_tags.push_back(m.tag(f));
+    }
+  }
+  stats.output_faces = out.faces.size();
+  stats.seconds.stitch += timer.lap();
   return result;
 }
 

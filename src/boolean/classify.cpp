@@ -4,6 +4,7 @@
 
 #include "mesh/topology.hpp"
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -83,6 +84,7 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
     for (std::uint32_t e : ops.face_edges(f)) {
       const auto& two = ops.edge_faces(e);
       const std::uint32_t g = two[0] == f ? two[1] : two[0];
+      if (g == kNoFace) continue;  // the rest of the solid, outside the other's box
       const auto& ends = ops.edge_vertices(e);
       const std::uint64_t key = edge_key(arr.vertex_point[ends[0]], arr.vertex_point[ends[1]]);
       if (curve.count(key)) continue;
@@ -100,39 +102,108 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   std::vector<std::uint32_t> members(n);
   std::iota(members.begin(), members.end(), 0u);
   std::stable_sort(members.begin(), members.end(), [&](std::uint32_t x, std::uint32_t y) { return root[x] < root[y]; });
+  std::vector<std::uint32_t> patch_begin;  // patch k: members[patch_begin[k] .. patch_begin[k + 1])
+  std::vector<std::uint32_t> patch_of(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (k == 0 || root[members[k]] != root[members[k - 1]]) patch_begin.push_back(k);
+    patch_of[members[k]] = static_cast<std::uint32_t>(patch_begin.size() - 1);
+  }
+  const auto patch_count = static_cast<std::uint32_t>(patch_begin.size());
+  patch_begin.push_back(n);
 
-  const geometry::RayParity rays[2] = {geometry::RayParity(ops.mesh(1)), geometry::RayParity(ops.mesh(0))};  // against the other operand
-  std::vector<std::uint8_t> inside_patch(n, 0);
-  for (std::size_t begin = 0; begin < n;) {
-    std::size_t end = begin;
-    while (end < n && root[members[end]] == root[members[begin]]) ++end;
-    const std::uint32_t first = members[begin];
-    if (!coincident[first]) {
-      const int operand = ops.operand_of_face(subs[first].face);
-      bool decided = false, inside = false;
-      // Fast path: an input vertex of this operand in the patch, not on the other surface.
-      for (std::size_t k = begin; k < end && !decided; ++k)
-        for (std::uint32_t p : subs[members[k]].points)
-          if (p < ops.vertex_count() && !arr.on_both_surfaces[p] && ops.operand_of_vertex(p) == operand) {
-            inside = rays[operand].inside(ops.vertex(p));
-            decided = true;
-            break;
-          }
-      if (!decided) {
-        const geometry::ExactPoint p0 = arr.points[subs[first].points[0]].exact();
-        const geometry::ExactPoint p1 = arr.points[subs[first].points[1]].exact();
-        const geometry::ExactPoint p2 = arr.points[subs[first].points[2]].exact();
-        const geometry::ExactPoint centroid{(p0.x + p1.x + p2.x) / 3, (p0.y + p1.y + p2.y) / 3,
-                                            (p0.z + p1.z + p2.z) / 3};
-        inside = rays[operand].inside(centroid);
-        ++result.exact_ray_casts;
-      }
-      inside_patch[root[first]] = inside;
+  // Verdicts: -1 unknown, 0 outside, 1 inside the other solid.
+  std::vector<std::int8_t> verdict(patch_count, -1);
+  // Seeds: an input vertex of the patch's own operand strictly outside the other solid's
+  // box is outside the other solid (comparisons of doubles: exact).
+  auto strictly_outside = [](const BoundingBox& box, const Vec3& p) {
+    return p.x < box.min.x || p.x > box.max.x || p.y < box.min.y || p.y > box.max.y || p.z < box.min.z ||
+           p.z > box.max.z;
+  };
+  for (std::uint32_t k = 0; k < patch_count; ++k) {
+    const std::uint32_t first = members[patch_begin[k]];
+    if (coincident[first]) continue;
+    const int operand = ops.operand_of_face(subs[first].face);
+    const BoundingBox& other_box = ops.solid_box(1 - operand);
+    for (std::uint32_t m = patch_begin[k]; m < patch_begin[k + 1] && verdict[k] < 0; ++m)
+      for (std::uint32_t p : subs[members[m]].points)
+        if (p < ops.vertex_count() && ops.operand_of_vertex(p) == operand && strictly_outside(other_box, ops.vertex(p))) {
+          verdict[k] = 0;
+          break;
+        }
+  }
+
+  // Patches on the two sides of a transversal crossing have opposite verdicts.
+  std::vector<std::vector<std::uint32_t>> opposite(patch_count);
+  for (auto [x, y] : split.opposite_sides) {
+    if (coincident[x] || coincident[y]) continue;
+    opposite[patch_of[x]].push_back(patch_of[y]);
+    opposite[patch_of[y]].push_back(patch_of[x]);
+  }
+
+  // Exact ray parity against the other whole solid, for patches nothing else decides; the
+  // search tree over that solid is built on first use only.
+  std::optional<geometry::RayParity> rays[2];
+  auto ray_verdict = [&](std::uint32_t k) -> std::int8_t {
+    const std::uint32_t first = members[patch_begin[k]];
+    const int operand = ops.operand_of_face(subs[first].face);
+    if (!rays[operand]) rays[operand].emplace(ops.solid(1 - operand));
+    ++result.ray_casts;
+    // Fast path: an input vertex of this operand in the patch, not on the other surface.
+    for (std::uint32_t m = patch_begin[k]; m < patch_begin[k + 1]; ++m)
+      for (std::uint32_t p : subs[members[m]].points)
+        if (p < ops.vertex_count() && !arr.on_both_surfaces[p] && ops.operand_of_vertex(p) == operand)
+          return rays[operand]->inside(ops.vertex(p));
+    const geometry::ExactPoint p0 = arr.points[subs[first].points[0]].exact();
+    const geometry::ExactPoint p1 = arr.points[subs[first].points[1]].exact();
+    const geometry::ExactPoint p2 = arr.points[subs[first].points[2]].exact();
+    const geometry::ExactPoint centroid{(p0.x + p1.x + p2.x) / 3, (p0.y + p1.y + p2.y) / 3,
+                                        (p0.z + p1.z + p2.z) / 3};
+    ++result.exact_ray_casts;
+    return rays[operand]->inside(centroid);
+  };
+
+  // One connected group of patches (joined by opposite-side relations) at a time: from
+  // its seeds, or else from one ray, the verdicts alternate across each crossing. A
+  // contradiction (possible only where the crossings are degenerate) sends every patch
+  // of the group to its own ray.
+  std::vector<std::uint8_t> visited(patch_count, 0);
+  std::vector<std::uint32_t> group, queue;
+  for (std::uint32_t k = 0; k < patch_count; ++k) {
+    if (visited[k] || coincident[members[patch_begin[k]]]) continue;
+    group.clear();
+    group.push_back(k);
+    visited[k] = 1;
+    for (std::size_t i = 0; i < group.size(); ++i)
+      for (std::uint32_t j : opposite[group[i]])
+        if (!visited[j]) {
+          visited[j] = 1;
+          group.push_back(j);
+        }
+    std::sort(group.begin(), group.end());
+    queue.clear();
+    for (std::uint32_t j : group)
+      if (verdict[j] >= 0) queue.push_back(j);
+    if (queue.empty()) {
+      verdict[group[0]] = ray_verdict(group[0]);
+      queue.push_back(group[0]);
     }
-    begin = end;
+    bool contradiction = false;
+    for (std::size_t i = 0; i < queue.size() && !contradiction; ++i)
+      for (std::uint32_t j : opposite[queue[i]]) {
+        const auto flipped = static_cast<std::int8_t>(1 - verdict[queue[i]]);
+        if (verdict[j] < 0) {
+          verdict[j] = flipped;
+          queue.push_back(j);
+        } else if (verdict[j] != flipped) {
+          contradiction = true;
+          break;
+        }
+      }
+    if (contradiction)
+      for (std::uint32_t j : group) verdict[j] = ray_verdict(j);
   }
   for (std::uint32_t s = 0; s < n; ++s)
-    if (!coincident[s]) result.side[s] = inside_patch[root[s]] ? Side::inside : Side::outside;
+    if (!coincident[s]) result.side[s] = verdict[patch_of[s]] == 1 ? Side::inside : Side::outside;
   return result;
 }
 

@@ -24,7 +24,8 @@ struct SubFace {
 
 struct Classification {
   std::vector<Side> side;  // per sub-face
-  std::size_t exact_ray_casts = 0;
+  std::size_t ray_casts = 0;        // patches decided by a ray (the rest: by seeds and crossings)
+  std::size_t exact_ray_casts = 0;  // of those, rays from an exact rational point
 };
 
 struct SplitResult;

@@ -257,6 +257,13 @@ PairIntersection intersect_faces(const Operands& ops, std::uint32_t fa, std::uin
   if (r.points.size() == 2) {
     r.segments_a.emplace_back(r.points[0].key, r.points[1].key);
     r.segments_b.emplace_back(r.points[0].key, r.points[1].key);
+    auto along_an_edge = [](const Location& p, const Location& q) {
+      for (int edge = 0; edge < 3; ++edge)
+        if (on_edge_of(p, edge) && on_edge_of(q, edge)) return true;
+      return false;
+    };
+    r.transversal = !along_an_edge(r.points[0].on_a, r.points[1].on_a) &&
+                    !along_an_edge(r.points[0].on_b, r.points[1].on_b);
   }
   return std::move(r);
 }

@@ -31,6 +31,10 @@ struct PairIntersection {
   std::uint32_t face_a = 0, face_b = 0;  // combined indices
   bool coplanar = false;
   bool same_orientation = false;  // coplanar only: the faces' normals agree
+  // Not coplanar, and the segment runs through the interiors of both faces (not along an
+  // edge of either): the surfaces cross there, so the pieces of either face on the two
+  // sides of it lie on opposite sides of the other solid.
+  bool transversal = false;
   std::vector<PairPoint> points;  // distinct keys
   // Constraint segments in each face (keys of their end points); they may lie on the
   // face's own boundary. For a non-coplanar pair both lists hold the one segment.

@@ -2,6 +2,11 @@
 // The two operands seen as one combined mesh: vertices of a then b, faces of a then b,
 // and the edge table (each undirected edge once, with its two faces). Indices into this
 // combined numbering are what intersection points are keyed by.
+//
+// The operands may be parts of two larger closed solids (the faces that can meet the
+// other solid, see active_part.hpp): then an edge may have one face only. Such an open
+// edge borders faces that lie outside the other solid's box; its vertices are "frozen":
+// the rest of the solid is joined there, so the result must keep them as they are.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -10,11 +15,19 @@
 
 namespace molsurf::boolean_engine {
 
+inline constexpr std::uint32_t kNoFace = ~std::uint32_t{0};
+
 class Operands {
  public:
+  // Two closed solids.
   Operands(const Mesh& a, const Mesh& b);
+  // Parts of the closed solids `solid_a` and `solid_b` (open edges allowed).
+  Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b);
 
   const Mesh& mesh(int operand) const { return operand == 0 ? a_ : b_; }
+  // The whole closed solid an operand is part of (for point-in-solid tests) and its box.
+  const Mesh& solid(int operand) const { return operand == 0 ? solid_a_ : solid_b_; }
+  const BoundingBox& solid_box(int operand) const { return solid_box_[operand]; }
   std::uint32_t vertex_count() const { return vertex_offset_b_ + static_cast<std::uint32_t>(b_.vertices.size()); }
   std::uint32_t face_count() const { return face_offset_b_ + static_cast<std::uint32_t>(b_.faces.size()); }
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_vertices_.size()); }
@@ -33,14 +46,25 @@ class Operands {
   // face_edges(f)[i] is the edge from corner i to corner i + 1.
   const std::array<std::uint32_t, 3>& face_edges(std::uint32_t f) const { return face_edges_[f]; }
   const std::array<std::uint32_t, 2>& edge_vertices(std::uint32_t e) const { return edge_vertices_[e]; }
+  // The two faces of an edge; the second is kNoFace on an open edge.
   const std::array<std::uint32_t, 2>& edge_faces(std::uint32_t e) const { return edge_faces_[e]; }
+  // A vertex on an open edge (never moved or merged by the Boolean).
+  bool frozen(std::uint32_t v) const { return !frozen_.empty() && frozen_[v]; }
+  std::size_t frozen_count() const { return frozen_count_; }
 
  private:
+  void build_edges(bool allow_open);
+
   const Mesh& a_;
   const Mesh& b_;
+  const Mesh& solid_a_;
+  const Mesh& solid_b_;
+  std::array<BoundingBox, 2> solid_box_;
   std::uint32_t vertex_offset_b_, face_offset_b_;
   std::vector<std::array<std::uint32_t, 3>> faces_, face_edges_;
   std::vector<std::array<std::uint32_t, 2>> edge_vertices_, edge_faces_;  // vertices sorted
+  std::vector<std::uint8_t> frozen_;
+  std::size_t frozen_count_ = 0;
 };
 
 }  // namespace molsurf::boolean_engine

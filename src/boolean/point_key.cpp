@@ -27,6 +27,7 @@ ImplicitPoint make_point(const Operands& operands, const PointKey& key) {
       const auto& e = operands.edge_vertices(key.i);
       const Vec3 &p = operands.vertex(e[0]), &q = operands.vertex(e[1]);
       for (std::uint32_t g : operands.edge_faces(key.j)) {
+        if (g == kNoFace) continue;
         const auto& f = operands.face(g);
         const Vec3 &a = operands.vertex(f[0]), &b = operands.vertex(f[1]), &c = operands.vertex(f[2]);
         if (orient3d(a, b, c, p) != orient3d(a, b, c, q)) return ImplicitPoint::line_plane(p, q, a, b, c);

@@ -50,8 +50,8 @@ class Repairer {
   // Indexes only the faces that rounding can have touched: those with a rounded corner,
   // and every face around their corners (what collapses, flips and crossing tests read).
   Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
-           const std::vector<std::uint8_t>& rounded)
-      : m_(m), operand_(operand), source_(source), alive_(m.faces.size(), 1) {
+           const std::vector<std::uint8_t>& rounded, const std::vector<std::uint8_t>& frozen)
+      : m_(m), operand_(operand), source_(source), frozen_(frozen), alive_(m.faces.size(), 1) {
     // Two rings around the rounded faces: the crossing test of a sliver reads its 2-ring.
     std::vector<std::uint8_t> near(m.vertices.size(), 0), nearer(m.vertices.size(), 0);
     for (const Triangle& t : m.faces)
@@ -69,7 +69,7 @@ class Repairer {
     }
   }
 
-  std::size_t run(const std::vector<std::uint8_t>& rounded) {
+  RepairOutcome run(const std::vector<std::uint8_t>& rounded) {
     for (int pass = 0; pass < 8; ++pass) {
       bool changed = false;
       for (std::uint32_t f : candidates())
@@ -91,7 +91,7 @@ class Repairer {
     std::size_t left = 0;
     for (std::uint32_t f : candidates()) left += alive_[f] && degenerate(m_, m_.faces[f]);
     compact();
-    return left;
+    return {left, refused_};
   }
 
   // Indexed faces and faces added since (flips), in order.
@@ -208,6 +208,7 @@ class Repairer {
   // A collapse that leaves fewer crossings around it than there were (exactly counted);
   // clusters of near-coincident points clear over several passes.
   bool checked_collapse(Index u, Index v) {
+    if (touches_frozen({u, v})) return false;
     const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
     if (on_edge.size() != 2 || !link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
     // A real face moving to u must not turn over; a sliver (rounding may already have
@@ -247,6 +248,7 @@ class Repairer {
   // Merges v into u (same position). Link condition: the vertices adjacent to both are
   // exactly the opposite corners of the faces on edge uv.
   bool collapse(Index u, Index v) {
+    if (touches_frozen({u, v})) return false;
     const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
     if (!link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
     for (std::uint32_t g : on_edge) kill(g);
@@ -269,6 +271,7 @@ class Repairer {
     for (Index w : m_.faces[g])
       if (w != a && w != b) d = w;
     if (edge_faces_.count(edge_key(c, d)) && !edge_faces_[edge_key(c, d)].empty()) return false;
+    if (touches_frozen({a, b, c, d})) return false;
     // f runs a -> b (corner order c, a, b), so g runs b -> a: new faces (a, d, c), (d, b, c).
     const Triangle& tf = m_.faces[f];
     int k = 0;
@@ -280,6 +283,17 @@ class Repairer {
     add_face({from, d, c}, g);
     add_face({d, to, c}, g);
     return true;
+  }
+
+  // Frozen vertices join faces outside this result: no repair may move, merge or re-link
+  // them (the caller redoes the Boolean on the whole solids when one was needed).
+  bool touches_frozen(std::initializer_list<Index> vertices) {
+    for (Index v : vertices)
+      if (!frozen_.empty() && frozen_[v]) {
+        ++refused_;
+        return true;
+      }
+    return false;
   }
 
   void compact() {
@@ -301,6 +315,8 @@ class Repairer {
   Mesh& m_;
   std::vector<std::uint8_t>& operand_;
   std::vector<std::uint32_t>& source_;
+  const std::vector<std::uint8_t>& frozen_;
+  std::size_t refused_ = 0;
   std::vector<std::uint8_t> alive_;
   mutable Mesh probe_;
   std::vector<std::uint32_t> indexed_;
@@ -311,8 +327,9 @@ class Repairer {
 
 }  // namespace
 
-std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
-                            std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded) {
+RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
+                              std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded,
+                              const std::vector<std::uint8_t>& frozen) {
   // Most results have no degenerate face and no sliver at a rounded point: then nothing
   // is indexed at all.
   bool any = false;
@@ -323,8 +340,8 @@ std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
       break;
     }
   }
-  if (!any) return 0;
-  return Repairer(mesh, face_operand, face_source, rounded).run(rounded);
+  if (!any) return {};
+  return Repairer(mesh, face_operand, face_source, rounded, frozen).run(rounded);
 }
 
 }  // namespace molsurf::boolean_engine

@@ -20,9 +20,16 @@
 namespace molsurf::boolean_engine {
 
 
+struct RepairOutcome {
+  std::size_t degenerate_left = 0;  // faces still degenerate afterwards (0 unless blocked)
+  std::size_t refused_frozen = 0;   // repairs not done because they would touch a frozen vertex
+};
+
 // `rounded[v]`: vertex v is a rounded intersection point (the only places rounding can
-// fold). Returns the number of faces still degenerate afterwards (0 unless blocked).
-std::size_t repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand, std::vector<std::uint32_t>& face_source,
-                            const std::vector<std::uint8_t>& rounded);
+// fold). `frozen[v]` (empty: none): a vertex that faces outside this mesh share, which
+// no repair may touch.
+RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
+                              std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded,
+                              const std::vector<std::uint8_t>& frozen);
 
 }  // namespace molsurf::boolean_engine

@@ -11,7 +11,24 @@ namespace {
 struct FaceSplit {
   std::vector<SubFace> sub_faces;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> curve_pieces;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> opposite_sides;  // local sub-face indices
 };
+
+// Pairs of sub-faces on the two sides of a transversal piece of the curve: each piece
+// (s, t) is an edge of exactly one sub-face in each direction.
+void find_opposite_sides(FaceSplit& out, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pieces) {
+  for (auto [s, t] : pieces) {
+    std::uint32_t forward = ~0u, backward = ~0u;
+    for (std::uint32_t k = 0; k < out.sub_faces.size(); ++k) {
+      const auto& p = out.sub_faces[k].points;
+      for (int i = 0; i < 3; ++i) {
+        if (p[i] == s && p[(i + 1) % 3] == t) forward = k;
+        if (p[i] == t && p[(i + 1) % 3] == s) backward = k;
+      }
+    }
+    if (forward != ~0u && backward != ~0u) out.opposite_sides.emplace_back(forward, backward);
+  }
+}
 
 FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint32_t f) {
   FaceSplit out;
@@ -34,7 +51,21 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
   ids.insert(ids.end(), face.interior.begin(), face.interior.end());
   const FacePoints points(std::move(ids), arr.points, face.projection);
   for (const auto& run : edge_run) face.collinear_sets.push_back(run);
-  const auto pieces = split_segments_at_points(arr.face_segments[f], points, face.collinear_sets);
+  const std::size_t first_line = face.collinear_sets.size();
+  const auto& segments = arr.face_segments[f];
+  const auto pieces = split_segments_at_points(segments, points, face.collinear_sets);
+  // Pieces of transversal segments: both ends on the line of one (segments do not overlap
+  // along a line unless they lie on a face's edge, which transversal ones never do).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> transversal_pieces;
+  const auto& transversal = arr.transversal_segments[f];
+  if (!transversal.empty())
+    for (std::size_t j = 0; j < segments.size(); ++j) {
+      if (!std::binary_search(transversal.begin(), transversal.end(), segments[j])) continue;
+      const auto& line = face.collinear_sets[first_line + j];
+      for (auto [s, t] : pieces)
+        if (std::find(line.begin(), line.end(), s) != line.end() && std::find(line.begin(), line.end(), t) != line.end())
+          transversal_pieces.emplace_back(s, t);
+    }
   for (auto [s, t] : pieces) {
     out.curve_pieces.emplace_back(s, t);
     bool on_boundary = false;
@@ -44,6 +75,7 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
     if (!on_boundary) face.constraints.emplace_back(s, t);
   }
   for (const auto& tri : retriangulate_face(face, points)) out.sub_faces.push_back({tri, f});
+  find_opposite_sides(out, transversal_pieces);
   return out;
 }
 
@@ -69,6 +101,8 @@ SplitResult split_faces(const Operands& ops, const Arrangement& arr) {
     if (next_cut < cut.size() && cut[next_cut] == f) {
       result.cut[f] = 1;
       FaceSplit& p = pieces[next_cut++];
+      const auto base = static_cast<std::uint32_t>(result.sub_faces.size());
+      for (auto [x, y] : p.opposite_sides) result.opposite_sides.emplace_back(base + x, base + y);
       result.sub_faces.insert(result.sub_faces.end(), p.sub_faces.begin(), p.sub_faces.end());
       result.intersection_edges.insert(result.intersection_edges.end(), p.curve_pieces.begin(), p.curve_pieces.end());
       continue;

@@ -17,6 +17,9 @@ struct SplitResult {
   std::vector<std::uint32_t> first_sub_face;
   std::vector<std::uint8_t> cut;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> intersection_edges;  // (lower, higher) point ids
+  // Sub-faces of one face on the two sides of a transversal crossing: one inside the other
+  // solid, one outside (classification propagates across these without a ray).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> opposite_sides;
   std::size_t split_faces = 0;
 };
 

@@ -183,11 +183,13 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::v
 std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint32_t>& point_of_vertex,
                                     const Arrangement& arr) {
   Mesh& m = r.mesh;
-  // Sheets can only touch at points on both surfaces: look at the faces around them only.
+  // Sheets can only touch at points on both surfaces that are not transversal crossings:
+  // look at the faces around them only (in a generic union there are none).
   std::vector<std::uint32_t> near;
+  if (std::find(arr.may_touch.begin(), arr.may_touch.end(), 1) == arr.may_touch.end()) return 0;
   for (std::uint32_t f = 0; f < m.faces.size(); ++f)
     for (std::uint32_t v : m.faces[f])
-      if (arr.on_both_surfaces[point_of_vertex[v]]) {
+      if (arr.may_touch[point_of_vertex[v]]) {
         near.push_back(f);
         break;
       }
@@ -199,7 +201,7 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
   }
   const std::size_t original_vertices = point_of_vertex.size();
   auto may_split = [&](std::uint32_t v) {  // on both surfaces, or a midpoint added below
-    return v >= original_vertices || arr.on_both_surfaces[point_of_vertex[v]];
+    return v >= original_vertices || arr.may_touch[point_of_vertex[v]];
   };
   std::size_t copies = duplicate_fan_vertices(m, pairs, near, may_split);
   if (pairs.empty()) return copies;
@@ -273,19 +275,26 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
     r.face_source.push_back(source);
     if (tagged) r.mesh.face_tags.push_back(ops.mesh(operand).tag(source));
   }
-  std::vector<std::uint8_t> rounded(point_of_vertex.size());
+  std::vector<std::uint8_t> rounded(point_of_vertex.size()), frozen;
   for (std::size_t v = 0; v < rounded.size(); ++v) rounded[v] = !arr.points[point_of_vertex[v]].is_explicit();
-  repair_rounding(r.mesh, r.face_operand, r.face_source, rounded);
+  if (ops.frozen_count() > 0) {
+    frozen.assign(point_of_vertex.size(), 0);
+    for (std::size_t v = 0; v < frozen.size(); ++v)
+      frozen[v] = point_of_vertex[v] < ops.vertex_count() && ops.frozen(point_of_vertex[v]);
+  }
+  r.repair = repair_rounding(r.mesh, r.face_operand, r.face_source, rounded, frozen);
   r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
   // Collapses leave vertices no face uses: renumber in order of first use.
   std::vector<Index> renumber(r.mesh.vertices.size(), ~Index{0});
   std::vector<Vec3> used;
   used.reserve(r.mesh.vertices.size());
+  r.vertex_point.reserve(r.mesh.vertices.size());
   for (Triangle& t : r.mesh.faces)
     for (Index& v : t) {
       if (renumber[v] == ~Index{0}) {
         renumber[v] = static_cast<Index>(used.size());
         used.push_back(r.mesh.vertices[v]);
+        r.vertex_point.push_back(v < point_of_vertex.size() ? point_of_vertex[v] : ~0u);
       }
       v = renumber[v];
     }

@@ -9,6 +9,7 @@
 
 #include "boolean/arrangement.hpp"
 #include "boolean/classify.hpp"
+#include "boolean/repair_rounding.hpp"
 #include "molsurf/boolean.hpp"
 
 namespace molsurf::boolean_engine {
@@ -22,6 +23,10 @@ struct StitchResult {
   std::vector<std::uint8_t> face_operand;
   std::vector<std::uint32_t> face_source;
   std::size_t split_vertices = 0;
+  // Per output vertex: the arrangement point it rounds, or ~0 for a vertex added by the
+  // stitch (copies where sheets touch, midpoints).
+  std::vector<std::uint32_t> vertex_point;
+  RepairOutcome repair;
 };
 
 StitchResult stitch_sub_faces(const Operands& operands, const Arrangement& arrangement,

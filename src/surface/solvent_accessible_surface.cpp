@@ -13,36 +13,37 @@ namespace molsurf {
 
 namespace {
 
-// Interleaves the bits of three 21-bit integers: the Morton (Z-order) code.
-std::uint64_t spread_bits(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffull;
-  v = (v | v << 16) & 0x1f0000ff0000ffull;
-  v = (v | v << 8) & 0x100f00f00f00f00full;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-  v = (v | v << 2) & 0x1249249249249249ull;
-  return v;
+// The leaf order of the merge tree. The tree joins consecutive pairs level by level, so a
+// node at height h covers order positions [k 2^h, (k + 1) 2^h): its left child holds the
+// first 2^(h-1) of them. Each node's atoms are split there by their coordinate along the
+// longest extent of their centres (ties by atom index: deterministic), a k-d tree whose
+// two halves of any node lie on either side of one plane.
+void order_subtree(std::span<const Atom> atoms, std::span<std::uint32_t> ids, std::size_t height) {
+  if (ids.size() <= 1 || height == 0) return;
+  const std::size_t left = std::size_t{1} << (height - 1);
+  if (ids.size() <= left) {  // only a left child: nothing to split at this height
+    order_subtree(atoms, ids, height - 1);
+    return;
+  }
+  BoundingBox box;
+  for (std::uint32_t i : ids) box.extend(atoms[i].centre);
+  const Vec3 extent = box.max - box.min;
+  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+  std::nth_element(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(left), ids.end(),
+                   [&](std::uint32_t i, std::uint32_t j) {
+                     const double ci = atoms[i].centre[axis], cj = atoms[j].centre[axis];
+                     return ci != cj ? ci < cj : i < j;
+                   });
+  order_subtree(atoms, ids.first(left), height - 1);
+  order_subtree(atoms, ids.subspan(left), height - 1);
 }
 
-// Atom indices in Z-order of their centres (ties by index: deterministic).
 std::vector<std::uint32_t> spatial_order(std::span<const Atom> atoms) {
-  BoundingBox box;
-  for (const Atom& a : atoms) box.extend(a.centre);
-  const Vec3 extent = box.max - box.min;
-  const double size = std::max({extent.x, extent.y, extent.z, 1e-9});
-  auto cell = [&](double x, double lo) {
-    return static_cast<std::uint64_t>(std::clamp((x - lo) / size, 0.0, 1.0) * 2097151.0);
-  };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(atoms.size());
-  for (std::uint32_t i = 0; i < atoms.size(); ++i) {
-    const Vec3& c = atoms[i].centre;
-    keyed[i] = {spread_bits(cell(c.x, box.min.x)) | spread_bits(cell(c.y, box.min.y)) << 1 |
-                    spread_bits(cell(c.z, box.min.z)) << 2,
-                i};
-  }
-  std::sort(keyed.begin(), keyed.end());
   std::vector<std::uint32_t> order(atoms.size());
-  for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+  std::iota(order.begin(), order.end(), 0u);
+  std::size_t height = 0;
+  while ((std::size_t{1} << height) < atoms.size()) ++height;
+  order_subtree(atoms, order, height);
   return order;
 }
 
@@ -70,6 +71,8 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     const std::size_t pairs = level.size() / 2;
     std::vector<std::optional<Mesh>> next((level.size() + 1) / 2);
     const auto pair_count = static_cast<std::int64_t>(pairs);
+    std::vector<BooleanStats> merge_stats(pairs);
+    const auto level_start = std::chrono::steady_clock::now();
     // Many small merges: one per thread. Few large ones: one at a time, each using all
     // threads inside the engine. Either way the result is the same.
     if (pairs >= static_cast<std::size_t>(threads)) {
@@ -77,13 +80,17 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
       for (std::int64_t k = 0; k < pair_count; ++k) {
         Mesh& a = mesh_at(2 * k);
         Mesh& b = mesh_at(2 * k + 1);
-        next[k] = boolean(a, b, BooleanOp::union_).mesh;
+        BooleanResult merged = boolean(a, b, BooleanOp::union_);
+        merge_stats[k] = merged.stats;
+        next[k] = std::move(merged.mesh);
         level[2 * k].reset();
         level[2 * k + 1].reset();
       }
     } else {
       for (std::int64_t k = 0; k < pair_count; ++k) {
-        next[k] = boolean(mesh_at(2 * k), mesh_at(2 * k + 1), BooleanOp::union_).mesh;
+        BooleanResult merged = boolean(mesh_at(2 * k), mesh_at(2 * k + 1), BooleanOp::union_);
+        merge_stats[k] = merged.stats;
+        next[k] = std::move(merged.mesh);
         level[2 * k].reset();
         level[2 * k + 1].reset();
       }
@@ -91,6 +98,22 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     if (level.size() % 2 == 1) next.back() = std::move(mesh_at(level.size() - 1));
     merges_done += pairs;
     ++result.levels;
+    SurfaceLevel& stats = result.level_stats.emplace_back();
+    stats.merges = pairs;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - level_start).count();
+    for (const BooleanStats& m : merge_stats) {
+      stats.faces_in += m.faces_a + m.faces_b;
+      stats.active_faces += m.active_faces;
+      stats.faces_out += m.output_faces;
+      stats.split_faces += m.split_faces;
+      stats.ray_casts += m.ray_casts;
+      stats.whole_reruns += m.whole_reruns;
+      stats.steps.cull += m.seconds.cull;
+      stats.steps.intersect += m.seconds.intersect;
+      stats.steps.split += m.seconds.split;
+      stats.steps.classify += m.seconds.classify;
+      stats.steps.stitch += m.seconds.stitch;
+    }
     if (options.progress) options.progress(merges_done, total_merges);
     level = std::move(next);
   }

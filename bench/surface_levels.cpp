@@ -1,0 +1,56 @@
+// Where the time of one solvent-accessible surface goes, level by level of the merge
+// tree: merges, faces in / active / out, and the Boolean's steps summed over the level.
+//   surface_levels STRUCTURE [--threads N] [--density D] [--probe P]
+#include <omp.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/surface.hpp"
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: surface_levels STRUCTURE [--threads N] [--density D] [--probe P]\n");
+    return 2;
+  }
+  molsurf::SurfaceOptions options;
+  for (int i = 2; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (flag == "--threads") options.threads = std::atoi(argv[i + 1]);
+    if (flag == "--density") options.spheres.density = std::atof(argv[i + 1]);
+    if (flag == "--probe") options.spheres.probe = std::atof(argv[i + 1]);
+  }
+  const molsurf::Structure structure = molsurf::read_structure(argv[1]);
+  const molsurf::SurfaceResult result = molsurf::solvent_accessible_surface(structure.atoms, options);
+  std::printf("%s: %zu atoms, %zu faces, %d threads, union %.3f s\n\n", argv[1], structure.atoms.size(),
+              result.mesh.faces.size(), options.threads > 0 ? options.threads : omp_get_max_threads(),
+              result.seconds.union_levels);
+  std::printf("| level | merges | faces in | active | faces out | split faces | rays | reruns | cull s | intersect s | split s | classify s | stitch s | wall s |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  molsurf::SurfaceLevel sum;
+  for (std::size_t k = 0; k < result.level_stats.size(); ++k) {
+    const auto& l = result.level_stats[k];
+    std::printf("| %zu | %zu | %zu | %zu | %zu | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", k, l.merges,
+                l.faces_in, l.active_faces, l.faces_out, l.split_faces, l.ray_casts, l.whole_reruns, l.steps.cull,
+                l.steps.intersect, l.steps.split, l.steps.classify, l.steps.stitch, l.seconds);
+    sum.merges += l.merges;
+    sum.faces_in += l.faces_in;
+    sum.active_faces += l.active_faces;
+    sum.faces_out += l.faces_out;
+    sum.split_faces += l.split_faces;
+    sum.ray_casts += l.ray_casts;
+    sum.whole_reruns += l.whole_reruns;
+    sum.steps.cull += l.steps.cull;
+    sum.steps.intersect += l.steps.intersect;
+    sum.steps.split += l.steps.split;
+    sum.steps.classify += l.steps.classify;
+    sum.steps.stitch += l.steps.stitch;
+    sum.seconds += l.seconds;
+  }
+  std::printf("| all | %zu | %zu | %zu | %zu | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", sum.merges,
+              sum.faces_in, sum.active_faces, sum.faces_out, sum.split_faces, sum.ray_casts, sum.whole_reruns,
+              sum.steps.cull, sum.steps.intersect, sum.steps.split, sum.steps.classify, sum.steps.stitch, sum.seconds);
+  return 0;
+}
