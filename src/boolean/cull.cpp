@@ -23,21 +23,29 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> cull_face_pairs(const Opera
   const geometry::BoxBvh tree = geometry::BoxBvh::for_faces(b, b_near);
 
   const auto face_count_a = static_cast<std::int64_t>(a.faces.size());
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> per_face(a.faces.size());
-// Small unions (most of a molecule's merge tree) stay serial: a parallel region costs more.
-#pragma omp parallel for schedule(dynamic, 256) if (face_count_a > 8192)
-  for (std::int64_t f = 0; f < face_count_a; ++f) {
-    const BoundingBox box = geometry::face_box(a, static_cast<std::size_t>(f));
-    if (!box.overlaps(overlap)) continue;
-    tree.for_each_overlap(box, [&](std::uint32_t g) {
-      per_face[f].emplace_back(static_cast<std::uint32_t>(f), g + operands.face_offset_b());
-    });
-  }
+  const std::uint32_t offset_b = operands.face_offset_b();
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (auto& list : per_face) {
-    std::sort(list.begin(), list.end());
-    pairs.insert(pairs.end(), list.begin(), list.end());
+  // Pairs in order of a's face, then b's (deterministic for any thread count).
+  auto candidates_of = [&](std::uint32_t f, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
+    const BoundingBox box = geometry::face_box(a, f);
+    if (!box.overlaps(overlap)) return;
+    const std::size_t first = out.size();
+    tree.for_each_overlap(box, [&](std::uint32_t g) { out.emplace_back(f, g + offset_b); });
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+  };
+  // Small unions (most of a molecule's merge tree) stay serial: a parallel region costs more.
+  if (face_count_a <= 8192) {
+    for (std::uint32_t f = 0; f < a.faces.size(); ++f) candidates_of(f, pairs);
+    return pairs;
   }
+  constexpr std::int64_t kChunk = 1024;
+  const std::int64_t chunks = (face_count_a + kChunk - 1) / kChunk;
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> per_chunk(chunks);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t c = 0; c < chunks; ++c)
+    for (std::int64_t f = c * kChunk; f < std::min(face_count_a, (c + 1) * kChunk); ++f)
+      candidates_of(static_cast<std::uint32_t>(f), per_chunk[c]);
+  for (const auto& list : per_chunk) pairs.insert(pairs.end(), list.begin(), list.end());
   return pairs;
 }
 

@@ -31,6 +31,19 @@ double smallest_angle_of(const Mesh& m, const Triangle& t) {
 
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
+// The same selection as smallest_angle_of(...) < kSliverDeg without trigonometry: the
+// smallest angle lies opposite the shortest edge, and its sine is |cross| over the
+// product of the two longer edges. Only selects faces for exact tests.
+bool is_sliver(const Mesh& m, const Triangle& t) {
+  const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+  double l[3] = {dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)};
+  std::sort(l, l + 3);
+  const Vec3 n = cross(b - a, c - a);
+  const double cross2 = dot(n, n);
+  static const double sine = std::sin(kSliverDeg * 3.141592653589793 / 180);
+  return cross2 < sine * sine * l[1] * l[2] * (1 + 1e-9);
+}
+
 bool degenerate(const Mesh& m, const Triangle& t) {
   if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
   return geometry::collinear3d(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
@@ -335,7 +348,7 @@ RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operan
   bool any = false;
   for (const Triangle& t : mesh.faces) {
     if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
-    if (degenerate(mesh, t) || smallest_angle_of(mesh, t) < kSliverDeg) {
+    if (is_sliver(mesh, t) || degenerate(mesh, t)) {
       any = true;
       break;
     }

@@ -129,6 +129,8 @@ class AdvancingFront {
  public:
   AdvancingFront(const FaceToSplit& face, const FacePoints& points) : face_(face), points_(points) {
     const int n = static_cast<int>(points.ids().size());
+    n_ = points.ids().size();
+    if (n_ <= kMemoPoints) memo_.assign(n_ * n_ * n_, kUnknown);
     for (int i = 0; i < n; ++i) {
       const ImplicitPoint& p = points.point(i);
       approx_.push_back({p.coordinate(face.projection.u).mid(), p.coordinate(face.projection.v).mid()});
@@ -148,8 +150,14 @@ class AdvancingFront {
   std::vector<std::array<std::uint32_t, 3>> run() {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     const std::size_t limit = 4 * points_.ids().size() + 4 * face_.constraints.size() + 16;
-    while (!queue_.empty()) {
-      const auto [length, a, b] = *queue_.begin();
+    while (!front_.empty()) {
+      // The shortest front edge (ties by its ends: deterministic).
+      std::size_t next = 0;
+      for (std::size_t k = 1; k < front_.size(); ++k)
+        if (std::tie(front_[k].length, front_[k].a, front_[k].b) <
+            std::tie(front_[next].length, front_[next].a, front_[next].b))
+          next = k;
+      const int a = front_[next].a, b = front_[next].b;
       const int p = best_apex(a, b);
       if (p < 0)
         throw std::logic_error("boolean: the advancing front found no valid triangle on a front edge (" +
@@ -165,30 +173,47 @@ class AdvancingFront {
   }
 
  private:
-  using Edge = std::pair<int, int>;
+  struct FrontEdge {
+    double length;
+    int a, b;
+  };
 
+  // Orientation of three local points, each triple evaluated once (the front asks for the
+  // same triples over and over, in every order).
   int orient(int a, int b, int c) const {
     if (lines_[a] & lines_[b] & lines_[c]) return 0;  // collinear by construction
-    return points_.orient(a, b, c);
+    if (memo_.empty()) return points_.orient(a, b, c);
+    int sign = 1;
+    if (a > b) std::swap(a, b), sign = -sign;
+    if (b > c) std::swap(b, c), sign = -sign;
+    if (a > b) std::swap(a, b), sign = -sign;
+    std::int8_t& known = memo_[(static_cast<std::size_t>(a) * n_ + b) * n_ + c];
+    if (known == kUnknown) known = static_cast<std::int8_t>(points_.orient(a, b, c));
+    return sign * known;
   }
 
   double approx_length(int a, int b) const {
-    return std::hypot(approx_[b][0] - approx_[a][0], approx_[b][1] - approx_[a][1]);
+    const double dx = approx_[b][0] - approx_[a][0], dy = approx_[b][1] - approx_[a][1];
+    return std::sqrt(dx * dx + dy * dy);
   }
 
+  std::size_t find_edge(int a, int b) const {
+    for (std::size_t k = 0; k < front_.size(); ++k)
+      if (front_[k].a == a && front_[k].b == b) return k;
+    return front_.size();
+  }
   void add_edge(int a, int b) {
-    const double length = approx_length(a, b);
-    if (front_.emplace(Edge{a, b}, length).second) queue_.emplace(length, a, b);
+    if (find_edge(a, b) == front_.size()) front_.push_back({approx_length(a, b), a, b});
   }
   void remove_edge(int a, int b) {
-    auto it = front_.find({a, b});
-    queue_.erase({it->second, a, b});
-    front_.erase(it);
+    const std::size_t k = find_edge(a, b);
+    front_[k] = front_.back();
+    front_.pop_back();
   }
   // The new triangle's edge from -> to: closes the front edge (from, to) if the front has
   // it (the region there is now filled), otherwise opens (to, from) on the far side.
   void close_or_open(int from, int to) {
-    if (front_.count({from, to}))
+    if (find_edge(from, to) != front_.size())
       remove_edge(from, to);
     else
       add_edge(to, from);
@@ -221,8 +246,8 @@ class AdvancingFront {
       if (q == a || q == b || q == p) continue;
       if (orient(a, b, q) >= 0 && orient(b, p, q) >= 0 && orient(p, a, q) >= 0) return false;
     }
-    for (const auto& [edge, length] : front_) {
-      const auto [c, d] = edge;
+    for (const FrontEdge& edge : front_) {
+      const int c = edge.a, d = edge.b;
       for (auto [s, t] : {Edge{b, p}, Edge{p, a}}) {
         if (c == s || c == t || d == s || d == t) continue;
         if (properly_crosses(s, t, c, d)) return false;
@@ -232,7 +257,8 @@ class AdvancingFront {
   }
 
   int best_apex(int a, int b) const {
-    std::vector<std::pair<double, int>> candidates;
+    std::vector<std::pair<double, int>>& candidates = candidates_;
+    candidates.clear();
     const int n = static_cast<int>(points_.ids().size());
     for (int p = 0; p < n; ++p)
       if (p != a && p != b && orient(a, b, p) > 0) candidates.emplace_back(delaunay_offset(a, b, p), p);
@@ -245,15 +271,112 @@ class AdvancingFront {
   const FaceToSplit& face_;
   const FacePoints& points_;
   std::vector<std::array<double, 2>> approx_;
+  using Edge = std::pair<int, int>;
+  static constexpr std::int8_t kUnknown = 2;
+  static constexpr std::size_t kMemoPoints = 32;  // beyond: no memo (n^3 bytes)
   std::vector<std::uint64_t> lines_;  // bit k: on collinear set k
-  std::map<Edge, double> front_;
-  std::set<std::tuple<double, int, int>> queue_;  // shortest front edge first
+  std::vector<FrontEdge> front_;
+  std::size_t n_ = 0;
+  mutable std::vector<std::int8_t> memo_;
+  mutable std::vector<std::pair<double, int>> candidates_;
 };
 
 }  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> retriangulate_face(const FaceToSplit& face, const FacePoints& points) {
   return AdvancingFront(face, points).run();
+}
+
+}  // namespace molsurf::boolean_engine
+
+namespace molsurf::boolean_engine {
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_chords(
+    std::span<const std::uint32_t> boundary, std::span<const std::vector<std::uint32_t>> edge_runs,
+    std::span<const std::pair<std::uint32_t, std::uint32_t>> chords, std::span<const ImplicitPoint> points,
+    Projection projection) {
+  const int m = static_cast<int>(boundary.size());
+  auto index_of = [&](std::uint32_t id) {
+    for (int k = 0; k < m; ++k)
+      if (boundary[k] == id) return k;
+    return -1;
+  };
+  std::vector<std::uint8_t> runs(m, 0);  // bit r: on edge r (corners are on two)
+  for (std::size_t r = 0; r < edge_runs.size(); ++r)
+    for (std::uint32_t id : edge_runs[r]) {
+      const int k = index_of(id);
+      if (k < 0) return std::nullopt;
+      runs[k] |= static_cast<std::uint8_t>(1u << r);
+    }
+  std::vector<std::vector<int>> chords_from(m);  // higher ends of the chords at each index
+  for (auto [s, t] : chords) {
+    int i = index_of(s), j = index_of(t);
+    if (i < 0 || j < 0 || i == j || (runs[i] & runs[j])) return std::nullopt;
+    if (i > j) std::swap(i, j);
+    chords_from[i].push_back(j);
+  }
+  // Pieces: the boundary from i to j closed by the chord j -> i; inside it, each chord
+  // (k, l) met on the way is a shortcut, and the part it cuts off is a piece of its own.
+  std::vector<std::vector<int>> pieces;
+  auto trace = [&](auto&& self, int i, int j) -> void {
+    std::vector<int> piece{i};
+    for (int k = i; k != j;) {
+      int next = k + 1;
+      for (int l : chords_from[k % m])
+        if (l > next && l <= j && !(k == i && l == j)) next = l;
+      if (next > k + 1) self(self, k, next);
+      k = next;
+      if (k != j || j < m) piece.push_back(k % m);
+    }
+    pieces.push_back(std::move(piece));
+  };
+  trace(trace, 0, m);
+
+  std::vector<std::array<double, 2>> at(m);
+  for (int k = 0; k < m; ++k) {
+    const ImplicitPoint& p = points[boundary[k]];
+    at[k] = {p.coordinate(projection.u).mid(), p.coordinate(projection.v).mid()};
+  }
+  auto smallest_angle_cosine = [&](int a, int b, int c) {  // larger cosine: smaller angle
+    double worst = -1;
+    const int corner[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+      const auto &p = at[corner[i]], &q = at[corner[(i + 1) % 3]], &r = at[corner[(i + 2) % 3]];
+      const double ux = q[0] - p[0], uy = q[1] - p[1], wx = r[0] - p[0], wy = r[1] - p[1];
+      const double cosine = (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+      worst = std::max(worst, cosine);
+    }
+    return worst;
+  };
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (std::vector<int>& poly : pieces) {
+    while (poly.size() > 3) {
+      const int n = static_cast<int>(poly.size());
+      int best = -1;
+      double best_cosine = 2;
+      for (int i = 0; i < n; ++i) {
+        const int p = poly[(i + n - 1) % n], c = poly[i], q = poly[(i + 1) % n];
+        if (runs[p] & runs[c] & runs[q]) continue;  // collinear: no triangle
+        bool diagonal_over_a_point = false;         // p -> q along an edge holding another vertex
+        if (const std::uint8_t common = runs[p] & runs[q])
+          for (int w : poly)
+            if (w != p && w != c && w != q && (runs[w] & common)) diagonal_over_a_point = true;
+        if (diagonal_over_a_point) continue;
+        const double cosine = smallest_angle_cosine(p, c, q);
+        if (cosine < best_cosine) {
+          best_cosine = cosine;
+          best = i;
+        }
+      }
+      if (best < 0) return std::nullopt;
+      triangles.push_back({boundary[poly[(best + n - 1) % n]], boundary[poly[best]], boundary[poly[(best + 1) % n]]});
+      poly.erase(poly.begin() + best);
+    }
+    if (poly.size() != 3 || (runs[poly[0]] & runs[poly[1]] & runs[poly[2]])) return std::nullopt;
+    triangles.push_back({boundary[poly[0]], boundary[poly[1]], boundary[poly[2]]});
+  }
+  if (static_cast<int>(triangles.size()) != m - 2) return std::nullopt;  // chords that cross
+  return triangles;
 }
 
 }  // namespace molsurf::boolean_engine

@@ -77,3 +77,20 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
     std::vector<std::vector<std::uint32_t>>& collinear_sets);
 
 }  // namespace molsurf::boolean_engine
+
+namespace molsurf::boolean_engine {
+
+// The common case, without a single predicate: a face with no point in its interior. Its
+// constraints are then chords between boundary points that do not cross (a crossing would
+// be an interior point), so they cut the face into convex pieces, and three boundary
+// points are collinear exactly when one edge of the face holds all three. Each piece is
+// ear-clipped, collinearity decided from `edge_runs` (each edge's points, corners
+// included), the ear with the largest smallest angle first (approximate: quality only).
+// Counter-clockwise in the projection like the face; nullopt if a piece cannot be
+// clipped (the caller then uses the advancing front).
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_chords(
+    std::span<const std::uint32_t> boundary, std::span<const std::vector<std::uint32_t>> edge_runs,
+    std::span<const std::pair<std::uint32_t, std::uint32_t>> chords, std::span<const geometry::ImplicitPoint> points,
+    Projection projection);
+
+}  // namespace molsurf::boolean_engine

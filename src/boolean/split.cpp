@@ -47,6 +47,24 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
     face.boundary.insert(face.boundary.end(), inside.begin(), inside.end());
   }
   face.interior = arr.face_points[f];
+  if (face.interior.empty()) {
+    // Chords only: pieces are the segments themselves (no boundary point lies inside a
+    // chord), and segments on the boundary are no constraints.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> chords;
+    for (auto [s, t] : arr.face_segments[f]) {
+      bool on_boundary = false;
+      for (const auto& run : edge_run)
+        if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
+          on_boundary = true;
+      if (!on_boundary) chords.emplace_back(s, t);
+    }
+    if (auto triangles = triangulate_chords(face.boundary, edge_run, chords, arr.points, face.projection)) {
+      out.curve_pieces = arr.face_segments[f];
+      for (const auto& tri : *triangles) out.sub_faces.push_back({tri, f});
+      find_opposite_sides(out, arr.transversal_segments[f]);
+      return out;
+    }
+  }
   std::vector<std::uint32_t> ids = face.boundary;
   ids.insert(ids.end(), face.interior.begin(), face.interior.end());
   const FacePoints points(std::move(ids), arr.points, face.projection);
