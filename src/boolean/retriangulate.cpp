@@ -46,7 +46,15 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
 
 FacePoints::FacePoints(std::vector<std::uint32_t> ids, std::span<const ImplicitPoint> all, Projection projection)
     : ids_(std::move(ids)), all_(all), projection_(projection), exact_(ids_.size()), exponent_(INT_MAX) {
-  for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local_.emplace(ids_[i], i);
+  local_.reserve(ids_.size());
+  for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local_.emplace_back(ids_[i], i);
+  std::sort(local_.begin(), local_.end());
+}
+
+int FacePoints::local(std::uint32_t id) const {
+  const auto it = std::lower_bound(local_.begin(), local_.end(), std::pair<std::uint32_t, int>{id, INT_MIN});
+  if (it == local_.end() || it->first != id) throw std::out_of_range("boolean: a point that is not on this face");
+  return it->second;
 }
 
 const geometry::HomogeneousPoint& FacePoints::exact(int i) const {
@@ -376,6 +384,129 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_chords(
     triangles.push_back({boundary[poly[0]], boundary[poly[1]], boundary[poly[2]]});
   }
   if (static_cast<int>(triangles.size()) != m - 2) return std::nullopt;  // chords that cross
+  return triangles;
+}
+
+}  // namespace molsurf::boolean_engine
+
+namespace molsurf::boolean_engine {
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
+                                                                                const FacePoints& points) {
+  static const double kSliverCosine = std::cos(1.0 * 3.141592653589793 / 180);  // 1 degree
+  const int n = static_cast<int>(points.ids().size());
+  const int m = static_cast<int>(face.boundary.size());
+  if (n > 64) return std::nullopt;
+  // Local indices: the boundary points are 0 .. m-1 in order (FacePoints keeps the order).
+  std::vector<int> local_boundary(m);
+  for (int k = 0; k < m; ++k) local_boundary[k] = points.local(face.boundary[k]);
+  std::vector<int> boundary_position(n, -1);
+  for (int k = 0; k < m; ++k) boundary_position[local_boundary[k]] = k;
+  std::vector<std::array<int, 2>> link(n, {-1, -1});
+  std::vector<int> degree(n, 0);
+  for (auto [s, t] : face.constraints) {
+    const int a = points.local(s), b = points.local(t);
+    if (degree[a] == 2 || degree[b] == 2) return std::nullopt;
+    link[a][degree[a]++] = b;
+    link[b][degree[b]++] = a;
+  }
+  for (int v = 0; v < n; ++v) {
+    const bool on_boundary = boundary_position[v] >= 0;
+    if (on_boundary ? degree[v] > 1 : degree[v] != 2) return std::nullopt;
+  }
+
+  // Pieces: walk with the piece on the left. Along the boundary, a point with a polyline
+  // turns into it; at the polyline's far end the walk goes on along the boundary.
+  std::vector<std::uint8_t> boundary_used(m, 0);
+  std::vector<std::vector<int>> pieces;
+  std::size_t interior_visits = 0;
+  for (int start = 0; start < m; ++start) {
+    if (boundary_used[start]) continue;
+    std::vector<int> piece;
+    int k = start;  // walking boundary edge k -> k + 1
+    for (int guard = 0; guard <= 2 * n + 2; ++guard) {
+      boundary_used[k] = 1;
+      piece.push_back(local_boundary[k]);
+      int v = local_boundary[(k + 1) % m];
+      if (degree[v] == 1) {  // follow the polyline to its other end
+        int previous = v;
+        piece.push_back(v);
+        v = link[v][0];
+        while (boundary_position[v] < 0) {
+          piece.push_back(v);
+          ++interior_visits;
+          const int next = link[v][0] == previous ? link[v][1] : link[v][0];
+          previous = v;
+          v = next;
+        }
+      }
+      k = boundary_position[v];
+      if (k == start) break;
+      if (boundary_used[k]) return std::nullopt;
+    }
+    if (k != start) return std::nullopt;
+    pieces.push_back(std::move(piece));
+  }
+  // Every interior point lies on a polyline walked once in each direction (no loops).
+  if (interior_visits != 2 * static_cast<std::size_t>(n - m)) return std::nullopt;
+
+  std::vector<std::int8_t> memo(static_cast<std::size_t>(n) * n * n, 2);
+  auto orient = [&](int a, int b, int c) {
+    int sign = 1;
+    if (a > b) std::swap(a, b), sign = -sign;
+    if (b > c) std::swap(b, c), sign = -sign;
+    if (a > b) std::swap(a, b), sign = -sign;
+    std::int8_t& known = memo[(static_cast<std::size_t>(a) * n + b) * n + c];
+    if (known == 2) known = static_cast<std::int8_t>(points.orient(a, b, c));
+    return sign * known;
+  };
+  std::vector<std::array<double, 2>> at(n);
+  for (int i = 0; i < n; ++i)
+    at[i] = {points.point(i).coordinate(face.projection.u).mid(), points.point(i).coordinate(face.projection.v).mid()};
+  auto smallest_angle_cosine = [&](int a, int b, int c) {
+    double worst = -1;
+    const int corner[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+      const auto &p = at[corner[i]], &q = at[corner[(i + 1) % 3]], &r = at[corner[(i + 2) % 3]];
+      const double ux = q[0] - p[0], uy = q[1] - p[1], wx = r[0] - p[0], wy = r[1] - p[1];
+      worst = std::max(worst, (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy)));
+    }
+    return worst;
+  };
+  const auto& ids = points.ids();
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (std::vector<int>& poly : pieces) {
+    while (poly.size() >= 3) {
+      const int k = static_cast<int>(poly.size());
+      int best = -1;
+      double best_cosine = 2;
+      for (int i = 0; i < k; ++i) {
+        const int p = poly[(i + k - 1) % k], c = poly[i], q = poly[(i + 1) % k];
+        if (orient(p, c, q) <= 0) continue;
+        bool empty = true;
+        for (int w : poly)
+          if (w != p && w != c && w != q && orient(p, c, w) >= 0 && orient(c, q, w) >= 0 && orient(q, p, w) >= 0) {
+            empty = false;
+            break;
+          }
+        if (!empty) continue;
+        const double cosine = smallest_angle_cosine(p, c, q);
+        if (cosine < best_cosine) {
+          best_cosine = cosine;
+          best = i;
+        }
+      }
+      // No ear, or only a sliver: near-collinear points (a polyline that is almost
+      // straight) are better served by the Delaunay choice of the advancing front.
+      if (best < 0 || best_cosine > kSliverCosine) return std::nullopt;
+      triangles.push_back({ids[poly[(best + k - 1) % k]], ids[poly[best]], ids[poly[(best + 1) % k]]});
+      poly.erase(poly.begin() + best);
+      if (poly.size() == 2) break;
+    }
+    if (poly.size() != 2) return std::nullopt;
+  }
+  // A triangulation of the face with all its points: m + 2 (n - m) - 2 triangles.
+  if (static_cast<int>(triangles.size()) != m + 2 * (n - m) - 2) return std::nullopt;
   return triangles;
 }
 

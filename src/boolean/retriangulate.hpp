@@ -43,7 +43,7 @@ class FacePoints {
  public:
   FacePoints(std::vector<std::uint32_t> ids, std::span<const geometry::ImplicitPoint> all, Projection projection);
   const std::vector<std::uint32_t>& ids() const { return ids_; }
-  int local(std::uint32_t id) const { return local_.at(id); }
+  int local(std::uint32_t id) const;
   const geometry::ImplicitPoint& point(int i) const { return all_[ids_[i]]; }
   const Projection& projection() const { return projection_; }
   int orient(int a, int b, int c) const;       // local indices
@@ -55,7 +55,7 @@ class FacePoints {
   std::vector<std::uint32_t> ids_;
   std::span<const geometry::ImplicitPoint> all_;
   Projection projection_;
-  std::unordered_map<std::uint32_t, int> local_;
+  std::vector<std::pair<std::uint32_t, int>> local_;  // (id, local index), sorted
   mutable std::vector<std::optional<geometry::HomogeneousPoint>> exact_;
   mutable int exponent_;
 };
@@ -92,5 +92,21 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_chords(
     std::span<const std::uint32_t> boundary, std::span<const std::vector<std::uint32_t>> edge_runs,
     std::span<const std::pair<std::uint32_t, std::uint32_t>> chords, std::span<const geometry::ImplicitPoint> points,
     Projection projection);
+
+}  // namespace molsurf::boolean_engine
+
+namespace molsurf::boolean_engine {
+
+// The next most common case: the constraints are disjoint polylines running from one
+// boundary point to another through the interior points (every interior point on exactly
+// two constraints, every boundary point on at most one). They cut the face into simple
+// polygons, traced without arithmetic; each is ear-clipped with exact orientations (an
+// ear: a strictly convex corner whose closed triangle holds no other corner of the
+// polygon), the ear with the largest smallest angle first (approximate: quality only).
+// nullopt when the constraints have another shape, or no ear is found, or the best ear
+// has an angle under 1 degree (the caller then uses the advancing front, whose Delaunay
+// choice handles nearly collinear points better).
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
+                                                                                const FacePoints& points);
 
 }  // namespace molsurf::boolean_engine

@@ -92,7 +92,9 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
         on_boundary = true;
     if (!on_boundary) face.constraints.emplace_back(s, t);
   }
-  for (const auto& tri : retriangulate_face(face, points)) out.sub_faces.push_back({tri, f});
+  auto triangles = triangulate_polylines(face, points);
+  if (!triangles) triangles = retriangulate_face(face, points);
+  for (const auto& tri : *triangles) out.sub_faces.push_back({tri, f});
   find_opposite_sides(out, transversal_pieces);
   return out;
 }

@@ -1,5 +1,7 @@
 #include "geometry/implicit_point.hpp"
 
+#include <cmath>
+
 #include "geometry/exact_integers.hpp"
 #include "geometry/predicates.hpp"
 
@@ -101,8 +103,27 @@ int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, in
 
 Vec3 ImplicitPoint::rounded() const {
   if (!is_lpi_) return def_[0];
-  const ExactPoint e = exact();
-  return {e.x.get_d(), e.y.get_d(), e.z.get_d()};
+  // X / W from the integer form, as a quotient of about 64 bits (one truncating integer
+  // division per coordinate: far cheaper than a canonical rational).
+  const int exponent = common_exponent(defining_values());
+  const HomogeneousPoint h = homogeneous(exponent);
+  const auto width_w = static_cast<long>(mpz_sizeinbase(h.w.get_mpz_t(), 2));
+  auto quotient = [&](const mpz_class& x) {
+    if (sgn(x) == 0) return 0.0;
+    const long shift = 64 - (static_cast<long>(mpz_sizeinbase(x.get_mpz_t(), 2)) - width_w);
+    mpz_class q;
+    if (shift >= 0) {
+      mpz_class numerator;
+      mpz_mul_2exp(numerator.get_mpz_t(), x.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+      mpz_tdiv_q(q.get_mpz_t(), numerator.get_mpz_t(), h.w.get_mpz_t());
+    } else {
+      mpz_class denominator;
+      mpz_mul_2exp(denominator.get_mpz_t(), h.w.get_mpz_t(), static_cast<mp_bitcnt_t>(-shift));
+      mpz_tdiv_q(q.get_mpz_t(), x.get_mpz_t(), denominator.get_mpz_t());
+    }
+    return std::ldexp(q.get_d(), static_cast<int>(exponent - shift));
+  };
+  return {quotient(h.x), quotient(h.y), quotient(h.z)};
 }
 
 int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, int u, int v) {

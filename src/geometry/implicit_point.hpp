@@ -44,7 +44,7 @@ class ImplicitPoint {
   // common exponent, and the homogeneous integer form scaled by 2^-exponent.
   std::span<const double> defining_values() const;
   HomogeneousPoint homogeneous(int exponent) const;
-  // Within one ulp of the exact point in each coordinate (GMP truncates toward zero);
+  // Within one ulp of the exact point in each coordinate (truncated toward zero);
   // the input itself for explicit points.
   Vec3 rounded() const;
 

@@ -47,6 +47,20 @@ std::vector<std::uint32_t> spatial_order(std::span<const Atom> atoms) {
   return order;
 }
 
+// The engine's own parallel loops use the default team size: make it the caller's thread
+// count for the duration (with one outer thread, inner regions would otherwise start
+// spinning workers on every core).
+class ThreadCountScope {
+ public:
+  explicit ThreadCountScope(int threads) : previous_(omp_get_max_threads()) { omp_set_num_threads(threads); }
+  ~ThreadCountScope() { omp_set_num_threads(previous_); }
+  ThreadCountScope(const ThreadCountScope&) = delete;
+  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
+
+ private:
+  int previous_;
+};
+
 }  // namespace
 
 SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
@@ -54,6 +68,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   SurfaceResult result;
   if (atoms.empty()) return result;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  const ThreadCountScope thread_count(threads);
 
   // Level 0: one (lazily built) sphere per atom, in spatial order.
   const std::vector<std::uint32_t> order = spatial_order(atoms);
