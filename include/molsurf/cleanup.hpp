@@ -1,6 +1,6 @@
 #pragma once
 // Surface improvement (paper §2.5): repeated unions leave slivers; this removes them by
-// collapsing the shortest edge of each distorted face when that keeps the surface valid.
+// edge collapses, edge flips and small vertex moves that keep the surface valid.
 #include <cstddef>
 
 #include "molsurf/mesh.hpp"
@@ -10,7 +10,7 @@ namespace molsurf {
 struct CleanupOptions {
   double min_angle_deg = 5;       // faces with a smaller angle are distorted
   int passes = 6;
-  double max_area_change = 1e-3;  // relative; collapses stop before exceeding it
+  double max_area_change = 1e-3;  // relative; changes stop before exceeding it
 };
 
 struct CleanupStats {
@@ -18,18 +18,25 @@ struct CleanupStats {
   double area_before = 0, area_after = 0;
   std::size_t collapses = 0;
   std::size_t flips = 0;
-  std::size_t refused = 0;  // collapses that would have broken validity or quality
+  std::size_t moves = 0;    // vertices moved (tangential smoothing around a remaining sliver)
+  std::size_t refused = 0;  // distorted faces no valid change improved (once per pass)
 };
 
-// A collapse of edge uv (v merged into u) is made only if: the link condition holds (the
-// mesh stays a 2-manifold); no face around v turns over or becomes degenerate (exact
-// orientation against its own previous plane); the smallest angle around the edge
-// improves; no moved face meets any other face beyond their shared corners (exact
-// triangle-pair test against a spatial hash); and the total area stays within
-// max_area_change. Where one end is on a seam (faces of different tags meet there) the
-// seam vertex is kept. A face with no collapsible edge (a cap) gets its longest edge
-// flipped instead, within one sphere (equal tags, nearly coplanar faces), under the same
-// checks. Deterministic.
+// Each pass takes the distorted faces, worst first, and makes the best valid change
+// around each: collapse of a short edge (to either end or to its midpoint), flip of an
+// edge, merge of a cluster of vertices much closer to each other than to the rest (edge
+// by edge), or, last, a move of one corner toward the centre of its neighbours in the
+// tangent plane (a seam vertex only along its seam). Every change must keep the mesh a
+// 2-manifold (link condition; a flip's new edge must not exist), must turn no face over
+// or make it degenerate (exact collinearity; no normal may turn by more than 60
+// degrees), must make the worst angle among the faces it touches better (a cluster
+// merge is judged as a whole), must keep the total area within max_area_change, and no
+// face it changes may meet any other face beyond their shared corners (exact
+// triangle-pair test against a spatial hash). Seams (where faces of different tags, i.e.
+// different spheres, meet) stay where they are when that does as well: among changes
+// that reach min_angle_deg, those that keep them (a seam vertex merging into a vertex
+// on the same seams, a flip within one sphere) come first. A flip needs the two faces
+// within 26 degrees of coplanar, 20 across a seam. Deterministic.
 CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options = {});
 
 }  // namespace molsurf

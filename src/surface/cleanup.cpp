@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <unordered_map>
-#include <memory>
-#include <unordered_set>
+#include <vector>
 
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
@@ -17,7 +17,7 @@ namespace molsurf {
 namespace {
 
 // Faces by the cells of a uniform grid their boxes touch: the exact intersection test
-// of moved faces needs every face near them, and faces move as collapses happen.
+// of changed faces needs every face near them, and faces move as the cleanup goes on.
 class FaceGrid {
  public:
   FaceGrid(const Mesh& m, double cell) : m_(m), inverse_cell_(1.0 / cell) {}
@@ -59,9 +59,32 @@ double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return smallest;
 }
 
-class Collapser {
+constexpr Index kNoVertex = ~Index{0};
+constexpr double kSameTagFlipCos = 0.9;    // faces within 26 degrees of each other
+constexpr double kCrossTagFlipCos = 0.94;  // within 20 degrees
+constexpr double kClusterFraction = 0.2;   // a cluster's edges: under this part of the sliver's middle edge
+constexpr std::size_t kMaxCluster = 8;
+constexpr double kSmallestNewAngle = 1e-3;  // degrees; no change makes a face thinner
+constexpr double kSmoothCos = 0.87;        // a vertex moves only if its faces are within 30 degrees of their sum
+
+// One local change of the mesh, described before it is made so that every check can be
+// run on it first. Faces keep their index (and tag); a collapse removes two.
+struct Edit {
+  enum class Kind { collapse, flip, move } kind = Kind::collapse;
+  std::vector<std::uint32_t> removed;  // faces that disappear
+  std::vector<std::uint32_t> changed;  // faces that stay, with new corners or a moved corner
+  std::vector<Triangle> triangles;     // the corners of each changed face afterwards
+  std::vector<Vec3> reference;         // per changed face: a direction its normal must keep
+  Index moved = kNoVertex;             // a vertex that moves to `target`
+  Vec3 target;
+  // Set by Cleaner::evaluate.
+  double before = 0, after = 0, area_change = 0;
+  int rank = 0;  // 0: the seams (where spheres meet) stay where they are; 1: they move a little
+};
+
+class Cleaner {
  public:
-  Collapser(Mesh& m, const CleanupOptions& options) : m_(m), options_(options), alive_(m.faces.size(), 1) {
+  Cleaner(Mesh& m, const CleanupOptions& options) : m_(m), options_(options), alive_(m.faces.size(), 1) {
     faces_of_.resize(m.vertices.size());
     for (std::uint32_t f = 0; f < m.faces.size(); ++f)
       for (Index v : m.faces[f]) faces_of_[v].push_back(f);
@@ -94,12 +117,12 @@ class Collapser {
         else
           ++stats.refused;
       }
-      stats.collapses += done;
       if (done == 0) break;
     }
+    stats.collapses = collapses_;
     stats.flips = flips_;
-    stats.collapses -= flips_;  // improve_face counted every change
-    if (stats.collapses > 0) compact();  // flips alone remove nothing
+    stats.moves = moves_;
+    if (collapses_ > 0) compact();
   }
 
  private:
@@ -107,55 +130,258 @@ class Collapser {
     const Triangle& t = m_.faces[f];
     return smallest_angle(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
   }
-
-  // Exact relation of two triangles of the mesh (shared indices are what they may share).
-  geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
-    return geometry::classify_triangle_pair(m_, a, b, probe_);
+  Vec3 normal(const Triangle& t) const {
+    const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
+    return cross(b - a, c - a);
   }
 
-  bool on_seam(Index v) const {
-    if (!m_.has_tags()) return false;
-    const std::int32_t first = m_.face_tags[faces_of_[v].front()];
-    for (std::uint32_t f : faces_of_[v])
-      if (m_.face_tags[f] != first) return true;
-    return false;
+  // The tags of the faces around v, sorted and unique (one tag: not on a seam).
+  std::vector<std::int32_t> tags_of(Index v) const {
+    std::vector<std::int32_t> tags;
+    for (std::uint32_t f : faces_of_[v]) tags.push_back(m_.tag(f));
+    std::sort(tags.begin(), tags.end());
+    tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+    return tags;
   }
 
-  bool improve_face(std::uint32_t f) {
+  // The faces on edge ab (a closed 2-manifold has exactly two).
+  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const {
+    std::vector<std::uint32_t> on;
+    for (std::uint32_t g : faces_of_[a]) {
+      const Triangle& t = m_.faces[g];
+      if (t[0] == b || t[1] == b || t[2] == b) on.push_back(g);
+    }
+    return on;
+  }
+
+  // Cheap checks and measures, on doubles: no face may become degenerate (exact) or turn
+  // by more than 60 degrees (a selection: far from the exact question "does it turn
+  // over", on normals that rounding cannot reverse, as no new face is that thin), the worst angle among the faces involved must get better (unless the edit is
+  // one step of a larger one, judged as a whole), and the area must stay within budget.
+  bool evaluate(Edit& e, bool must_improve = true) const {
+    auto pos = [&](Index w) -> const Vec3& { return w == e.moved ? e.target : m_.vertices[w]; };
+    double before = 180, area_before = 0;
+    for (std::uint32_t f : e.removed) {
+      before = std::min(before, min_angle(f));
+      area_before += face_area(m_, f);
+    }
+    for (std::uint32_t f : e.changed) {
+      before = std::min(before, min_angle(f));
+      area_before += face_area(m_, f);
+    }
+    double after = 180, area_after = 0;
+    for (std::size_t k = 0; k < e.triangles.size(); ++k) {
+      const Triangle& t = e.triangles[k];
+      const Vec3 &a = pos(t[0]), &b = pos(t[1]), &c = pos(t[2]);
+      if (geometry::collinear3d(a, b, c)) return false;
+      const double angle = smallest_angle(a, b, c);
+      if (!(angle > kSmallestNewAngle)) return false;
+      const Vec3 n = cross(b - a, c - a);
+      const Vec3& r = e.reference[k];
+      if (!(dot(n, r) > 0.5 * norm(n) * norm(r))) return false;
+      after = std::min(after, angle);
+      area_after += 0.5 * norm(n);
+    }
+    if (must_improve && !(after > before)) return false;
+    e.before = before;
+    e.after = after;
+    e.area_change = area_after - area_before;
+    return std::abs(area_drift_ + e.area_change) <= area_budget_;
+  }
+
+  // Exactly: no face of the edit meets a face around it, or another face of the edit,
+  // beyond the corners and edges they share.
+  bool crosses_nothing(const Edit& e) {
+    skip_.assign(e.removed.begin(), e.removed.end());
+    skip_.insert(skip_.end(), e.changed.begin(), e.changed.end());
+    std::sort(skip_.begin(), skip_.end());
+    Vec3 saved;
+    if (e.moved != kNoVertex) {
+      saved = m_.vertices[e.moved];
+      m_.vertices[e.moved] = e.target;
+    }
+    bool ok = true;
+    for (std::size_t k = 0; ok && k < e.triangles.size(); ++k) {
+      const Triangle& t = e.triangles[k];
+      BoundingBox box;
+      for (Index w : t) box.extend(m_.vertices[w]);
+      candidates_.clear();
+      grid_->near(box, [&](std::uint32_t g) {
+        if (alive_[g] && !std::binary_search(skip_.begin(), skip_.end(), g)) candidates_.push_back(g);
+      });
+      std::sort(candidates_.begin(), candidates_.end());
+      candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+      for (std::uint32_t g : candidates_)
+        if (!acceptable(geometry::classify_triangle_pair(m_, t, m_.faces[g], probe_))) {
+          ok = false;
+          break;
+        }
+    }
+    for (std::size_t i = 0; ok && i < e.triangles.size(); ++i)
+      for (std::size_t j = i + 1; ok && j < e.triangles.size(); ++j)
+        ok = acceptable(geometry::classify_triangle_pair(m_, e.triangles[i], e.triangles[j], probe_));
+    if (e.moved != kNoVertex) m_.vertices[e.moved] = saved;
+    return ok;
+  }
+  static bool acceptable(geometry::TrianglePairRelation r) {
+    return r != geometry::TrianglePairRelation::intersecting && r != geometry::TrianglePairRelation::duplicate;
+  }
+
+  void commit(const Edit& e) {
+    if (journal_) {
+      Step step{e, {}, {}};
+      for (std::uint32_t f : e.changed) step.old_triangles.push_back(m_.faces[f]);
+      if (e.moved != kNoVertex) step.old_position = m_.vertices[e.moved];
+      for (const auto* list : {&e.removed, &e.changed})
+        for (std::uint32_t f : *list)
+          if (!first_angle_.contains(f)) first_angle_.emplace(f, min_angle(f));
+      journal_->push_back(std::move(step));
+    }
+    for (const auto* list : {&e.removed, &e.changed})
+      for (std::uint32_t f : *list) {
+        grid_->erase(f);
+        for (Index w : m_.faces[f]) std::erase(faces_of_[w], f);
+      }
+    for (std::uint32_t f : e.removed) alive_[f] = 0;
+    if (e.moved != kNoVertex) m_.vertices[e.moved] = e.target;
+    for (std::size_t k = 0; k < e.changed.size(); ++k) {
+      const std::uint32_t f = e.changed[k];
+      m_.faces[f] = e.triangles[k];
+      grid_->insert(f);
+      for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
+    }
+    area_drift_ += e.area_change;
+    switch (e.kind) {
+      case Edit::Kind::collapse: ++collapses_; break;
+      case Edit::Kind::flip: ++flips_; break;
+      case Edit::Kind::move: ++moves_; break;
+    }
+  }
+
+  // Undoes the last journaled edit.
+  void undo_last() {
+    const Step& step = journal_->back();
+    const Edit& e = step.edit;
+    for (std::uint32_t f : e.changed) {
+      grid_->erase(f);
+      for (Index w : m_.faces[f]) std::erase(faces_of_[w], f);
+    }
+    if (e.moved != kNoVertex) m_.vertices[e.moved] = step.old_position;
+    for (std::size_t k = 0; k < e.changed.size(); ++k) m_.faces[e.changed[k]] = step.old_triangles[k];
+    for (const auto* list : {&e.removed, &e.changed})
+      for (std::uint32_t f : *list) {
+        alive_[f] = 1;
+        grid_->insert(f);
+        for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
+      }
+    area_drift_ -= e.area_change;
+    switch (e.kind) {
+      case Edit::Kind::collapse: --collapses_; break;
+      case Edit::Kind::flip: --flips_; break;
+      case Edit::Kind::move: --moves_; break;
+    }
+    journal_->pop_back();
+  }
+
+  // A sliver whose short edge belongs to a cluster of vertices much closer to each other
+  // than to the rest (typically around a point where three spheres meet) often has no
+  // single collapse that keeps the link condition or improves the angles: the cluster
+  // merges into one vertex, edge by edge (each step under every validity check), and the
+  // whole is kept only if the worst angle among the faces it touched got better.
+  bool merge_cluster(std::uint32_t f) {
     const Triangle t = m_.faces[f];
-    std::array<std::pair<double, int>, 3> edges;
-    for (int i = 0; i < 3; ++i) edges[i] = {norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]), i};
-    std::sort(edges.begin(), edges.end());
-    for (const auto& [length, i] : edges) {
-      Index a = t[i], b = t[(i + 1) % 3];
-      // Keep the seam vertex: it lies on an intersection curve between two atoms' spheres.
-      const bool seam_a = on_seam(a), seam_b = on_seam(b);
-      if (seam_a && !seam_b) {
-        if (try_collapse(a, b)) return true;
-      } else if (seam_b && !seam_a) {
-        if (try_collapse(b, a)) return true;
-      } else if (try_collapse(a, b) || try_collapse(b, a)) {
-        return true;
+    std::array<double, 3> length;
+    for (int i = 0; i < 3; ++i) length[i] = norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]);
+    std::array<int, 3> order{0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return length[x] < length[y]; });
+    const double tiny = kClusterFraction * length[order[1]];
+    if (!(length[order[0]] <= tiny)) return false;
+    std::vector<Index> cluster{t[order[0]]};
+    for (std::size_t k = 0; k < cluster.size() && cluster.size() <= kMaxCluster; ++k)
+      for (Index w : vertex_neighbours(m_, faces_of_[cluster[k]], cluster[k]))
+        if (std::find(cluster.begin(), cluster.end(), w) == cluster.end() &&
+            norm(m_.vertices[w] - m_.vertices[cluster[k]]) <= tiny)
+          cluster.push_back(w);
+    if (cluster.size() < 2 || cluster.size() > kMaxCluster) return false;
+    // Everything merges into the vertex on the most seams (the junction), which stays.
+    Index keep = cluster[0];
+    std::size_t most = 0;
+    for (Index v : cluster)
+      if (const std::size_t n = tags_of(v).size(); n > most) {
+        most = n;
+        keep = v;
+      }
+    std::vector<Index> rest;
+    for (Index v : cluster)
+      if (v != keep) rest.push_back(v);
+    std::stable_sort(rest.begin(), rest.end(), [&](Index x, Index y) {
+      return norm(m_.vertices[x] - m_.vertices[keep]) < norm(m_.vertices[y] - m_.vertices[keep]);
+    });
+
+    std::vector<Step> journal;
+    journal_ = &journal;
+    first_angle_.clear();
+    for (bool progress = true; progress && !rest.empty();) {
+      progress = false;
+      for (auto it = rest.begin(); it != rest.end(); ++it) {
+        const std::vector<std::uint32_t> on_edge = faces_on_edge(keep, *it);
+        if (on_edge.size() != 2 || !link_condition(m_, faces_of_[keep], faces_of_[*it], on_edge, keep, *it)) continue;
+        Edit e = collapse(keep, *it, on_edge, m_.vertices[keep]);
+        if (!evaluate(e, false) || !crosses_nothing(e)) continue;
+        commit(e);
+        rest.erase(it);
+        progress = true;
+        break;
       }
     }
-    // A cap (one corner almost on the opposite edge) has no short edge to lose: flip its
-    // longest edge instead.
-    const int longest = edges[2].second;
-    return try_flip(f, t[longest], t[(longest + 1) % 3]);
+    double before = 180, after = 180;
+    for (const auto& [g, angle] : first_angle_) {
+      before = std::min(before, angle);
+      if (alive_[g]) after = std::min(after, min_angle(g));
+    }
+    const bool better = !journal.empty() && after > before;
+    if (!better)
+      while (!journal.empty()) undo_last();
+    journal_ = nullptr;
+    return better;
   }
 
-  // Flips edge ab of face f with the face across it, within one sphere (same tag).
-  bool try_flip(std::uint32_t f, Index a, Index b) {
-    std::uint32_t g = ~0u;
-    for (std::uint32_t h : faces_of_[a]) {
-      if (h == f) continue;
-      const Triangle& t = m_.faces[h];
-      if (t[0] == b || t[1] == b || t[2] == b) {
-        if (g != ~0u) return false;  // more than two faces: leave it
-        g = h;
-      }
+  // Collapse of edge uv: v merges into u, which moves to `target`. The caller has checked
+  // that the edge has two faces and the link condition.
+  Edit collapse(Index u, Index v, const std::vector<std::uint32_t>& on_edge, const Vec3& target) const {
+    Edit e;
+    e.kind = Edit::Kind::collapse;
+    e.removed = on_edge;
+    for (std::uint32_t g : faces_of_[v]) {
+      if (g == on_edge[0] || g == on_edge[1]) continue;
+      Triangle t = m_.faces[g];
+      for (Index& w : t)
+        if (w == v) w = u;
+      e.changed.push_back(g);
+      e.triangles.push_back(t);
+      e.reference.push_back(normal(m_.faces[g]));
     }
-    if (g == ~0u || (m_.has_tags() && m_.face_tags[f] != m_.face_tags[g])) return false;
+    if (!(target == m_.vertices[u])) {
+      for (std::uint32_t g : faces_of_[u]) {
+        if (g == on_edge[0] || g == on_edge[1]) continue;
+        e.changed.push_back(g);
+        e.triangles.push_back(m_.faces[g]);
+        e.reference.push_back(normal(m_.faces[g]));
+      }
+      e.moved = u;
+      e.target = target;
+    }
+    return e;
+  }
+
+  // Flip of edge ab of face f: f and the face g across it become the two faces on the
+  // other diagonal cd. Empty (no faces) when the edge cannot flip.
+  Edit flip(std::uint32_t f, Index a, Index b) const {
+    Edit e;
+    e.kind = Edit::Kind::flip;
+    const std::vector<std::uint32_t> on = faces_on_edge(a, b);
+    if (on.size() != 2) return e;
+    const std::uint32_t g = on[0] == f ? on[1] : on[0];
     const Triangle tf = m_.faces[f], tg = m_.faces[g];
     Index c = 0, d = 0;
     for (Index w : tf)
@@ -164,147 +390,137 @@ class Collapser {
       if (w != a && w != b) d = w;
     for (std::uint32_t h : faces_of_[c])  // the new edge cd must not exist yet
       for (Index w : m_.faces[h])
-        if (w == d) return false;
+        if (w == d) return e;
+    // Nearly coplanar faces only; across a seam (different tags) nearer still.
+    const bool same_tag = m_.tag(f) == m_.tag(g);
+    const double min_cos = same_tag ? kSameTagFlipCos : kCrossTagFlipCos;
+    const Vec3 old_f = normal(tf), old_g = normal(tg);
+    if (!(dot(old_f, old_g) > min_cos * norm(old_f) * norm(old_g))) return e;
     int k = 0;
     while (tf[k] != c) ++k;
     const Index from = tf[(k + 1) % 3], to = tf[(k + 2) % 3];  // f runs from -> to along the edge
-    const Triangle n1{from, d, c}, n2{d, to, c};
-    const Vec3 &pf = m_.vertices[from], &pt = m_.vertices[to], &pc = m_.vertices[c], &pd = m_.vertices[d];
-    const Vec3 old1 = cross(pt - pf, pc - pf), old2 = cross(pf - pt, pd - pt);
-    const Vec3 new1 = cross(pd - pf, pc - pf), new2 = cross(pt - pd, pc - pd);
-    if (geometry::collinear3d(pf, pd, pc) || geometry::collinear3d(pd, pt, pc)) return false;
-    // Nearly coplanar pair only, and no face turns over.
-    const Vec3 mean = old1 / std::max(norm(old1), 1e-300) + old2 / std::max(norm(old2), 1e-300);
-    for (const Vec3& n : {new1, new2})
-      if (!(dot(n, mean) > 0.5 * norm(n) * norm(mean))) return false;
-    if (!(dot(old1, old2) > 0.9 * norm(old1) * norm(old2))) return false;
-    const double before = std::min(min_angle(f), min_angle(g));
-    const double after = std::min(smallest_angle(pf, pd, pc), smallest_angle(pd, pt, pc));
-    if (after <= before) return false;
-    const double area_change = 0.5 * (norm(new1) + norm(new2) - norm(old1) - norm(old2));
-    if (std::abs(area_drift_ + area_change) > area_budget_) return false;
-    const std::unordered_set<std::uint32_t> skip{f, g};
-    for (const Triangle& t : {n1, n2}) {
-      BoundingBox box;
-      for (Index w : t) box.extend(m_.vertices[w]);
-      std::vector<std::uint32_t> candidates;
-      grid_->near(box, [&](std::uint32_t h) {
-        if (alive_[h] && !skip.count(h)) candidates.push_back(h);
-      });
-      std::sort(candidates.begin(), candidates.end());
-      candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-      for (std::uint32_t h : candidates) {
-        const auto r = relation(t, m_.faces[h]);
-        if (r == geometry::TrianglePairRelation::intersecting || r == geometry::TrianglePairRelation::duplicate)
-          return false;
-      }
-    }
-    const auto r = relation(n1, n2);
-    if (r == geometry::TrianglePairRelation::intersecting) return false;
-    // Commit: f becomes n1, g becomes n2 (their tags are equal).
-    for (std::uint32_t h : {f, g}) {
-      grid_->erase(h);
-      for (Index w : m_.faces[h]) std::erase(faces_of_[w], h);
-    }
-    m_.faces[f] = n1;
-    m_.faces[g] = n2;
-    for (std::uint32_t h : {f, g}) {
-      grid_->insert(h);
-      for (Index w : m_.faces[h]) faces_of_[w].push_back(h);
-    }
-    area_drift_ += area_change;
-    ++flips_;
-    return true;
+    const Vec3 mean = old_f / std::max(norm(old_f), 1e-300) + old_g / std::max(norm(old_g), 1e-300);
+    e.changed = {f, g};
+    e.triangles = {Triangle{from, d, c}, Triangle{d, to, c}};
+    e.reference = {mean, mean};
+    e.rank = same_tag ? 0 : 1;
+    return e;
   }
 
-  // Merges v into u.
-  bool try_collapse(Index u, Index v) {
-    std::vector<std::uint32_t> on_edge, moving;
+  // v moves to `target`.
+  Edit move(Index v, const Vec3& target) const {
+    Edit e;
+    e.kind = Edit::Kind::move;
     for (std::uint32_t g : faces_of_[v]) {
-      const Triangle& t = m_.faces[g];
-      if (t[0] == u || t[1] == u || t[2] == u)
-        on_edge.push_back(g);
-      else
-        moving.push_back(g);
+      e.changed.push_back(g);
+      e.triangles.push_back(m_.faces[g]);
+      e.reference.push_back(normal(m_.faces[g]));
     }
-    if (on_edge.size() != 2) return false;
-    if (!link_condition(m_, faces_of_[u], faces_of_[v], on_edge, u, v)) return false;
+    e.moved = v;
+    e.target = target;
+    return e;
+  }
 
-    // Quality before: every face that changes or disappears.
-    double before = 180, after = 180, area_before = 0, area_after = 0;
-    for (std::uint32_t g : on_edge) {
-      before = std::min(before, min_angle(g));
-      area_before += face_area(m_, g);
+  // Where v may go to improve its faces: toward the centre of its neighbours, within the
+  // plane tangent to the surface there; a seam vertex only along its seam.
+  void move_candidates(Index v, std::vector<Edit>& out) const {
+    const std::vector<std::int32_t> tags = tags_of(v);
+    if (tags.size() > 2) return;  // where three spheres meet: stays
+    const Vec3 p = m_.vertices[v];
+    Vec3 step;
+    if (tags.size() == 1) {
+      Vec3 n, centre;
+      const std::vector<Index> ring = vertex_neighbours(m_, faces_of_[v], v);
+      for (std::uint32_t g : faces_of_[v]) n += normal(m_.faces[g]);
+      for (Index w : ring) centre += m_.vertices[w];
+      centre = centre / static_cast<double>(ring.size());
+      const double nn = dot(n, n);
+      if (!(nn > 0)) return;
+      // Only where the surface is smooth: a corner or crease (of an untagged mesh) stays.
+      for (std::uint32_t g : faces_of_[v]) {
+        const Vec3 ng = normal(m_.faces[g]);
+        if (!(dot(ng, n) > kSmoothCos * norm(ng) * std::sqrt(nn))) return;
+      }
+      step = centre - p;
+      step -= n * (dot(step, n) / nn);
+    } else {
+      // The two neighbours along the seam: edges whose two faces have different tags.
+      std::vector<Index> along;
+      for (Index w : vertex_neighbours(m_, faces_of_[v], v)) {
+        const std::vector<std::uint32_t> on = faces_on_edge(v, w);
+        if (on.size() == 2 && m_.tag(on[0]) != m_.tag(on[1])) along.push_back(w);
+      }
+      if (along.size() != 2) return;
+      const Vec3 s = m_.vertices[along[1]] - m_.vertices[along[0]];
+      const Vec3 centre = 0.5 * (m_.vertices[along[0]] + m_.vertices[along[1]]);
+      const double ss = dot(s, s);
+      if (!(ss > 0)) return;
+      step = s * (dot(centre - p, s) / ss);
     }
-    const Vec3& pu = m_.vertices[u];
-    std::vector<Triangle> moved(moving.size());
-    for (std::size_t k = 0; k < moving.size(); ++k) {
-      const std::uint32_t g = moving[k];
-      Triangle t = m_.faces[g];
-      before = std::min(before, min_angle(g));
-      area_before += face_area(m_, g);
-      // The face keeps its orientation: u must stay strictly on the same side of the plane
-      // through the other two corners and v's old normal, decided exactly as "the new
-      // triangle is not degenerate and its normal does not turn by more than 90 degrees".
-      int k_v = 0;
-      while (t[k_v] != v) ++k_v;
-      const Vec3& p1 = m_.vertices[t[(k_v + 1) % 3]];
-      const Vec3& p2 = m_.vertices[t[(k_v + 2) % 3]];
-      const Vec3 old_normal = cross(p1 - m_.vertices[v], p2 - m_.vertices[v]);
-      const Vec3 new_normal = cross(p1 - pu, p2 - pu);
-      if (geometry::collinear3d(pu, p1, p2)) return false;
-      if (!(dot(old_normal, new_normal) > 0.5 * norm(old_normal) * norm(new_normal))) return false;
-      t[k_v] = u;
-      moved[k] = t;
-      after = std::min(after, smallest_angle(pu, p1, p2));
-      area_after += 0.5 * norm(new_normal);
+    for (double fraction : {1.0, 0.5, 0.25}) {
+      Edit e = move(v, p + fraction * step);
+      e.rank = tags.size() == 1 ? 0 : 1;
+      if (!(e.target == p) && evaluate(e)) out.push_back(std::move(e));
     }
-    if (after <= before) return false;
-    const double area_change = area_after - area_before;
-    if (std::abs(area_drift_ + area_change) > area_budget_) return false;
+  }
 
-    // Exactly: no moved face may meet another face beyond shared corners.
-    std::unordered_set<std::uint32_t> skip(on_edge.begin(), on_edge.end());
-    skip.insert(moving.begin(), moving.end());
-    for (const Triangle& t : moved) {
-      BoundingBox box;
-      for (Index w : t) box.extend(m_.vertices[w]);
-      std::vector<std::uint32_t> candidates;
-      grid_->near(box, [&](std::uint32_t g) {
-        if (alive_[g] && !skip.count(g)) candidates.push_back(g);
-      });
-      std::sort(candidates.begin(), candidates.end());
-      candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-      for (std::uint32_t g : candidates) {
-        const auto r = relation(t, m_.faces[g]);
-        if (r == geometry::TrianglePairRelation::intersecting || r == geometry::TrianglePairRelation::duplicate)
-          return false;
+  // One distorted face: the collapses of its short edges (to either end or the midpoint)
+  // and the flips of its edges, best first; then the merge of a cluster of vertices
+  // around it; last, a move of one of its corners.
+  bool improve_face(std::uint32_t f) {
+    const Triangle t = m_.faces[f];
+    std::array<double, 3> length;
+    for (int i = 0; i < 3; ++i) length[i] = norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]);
+    const int longest = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    std::vector<Edit> options;
+    for (int i = 0; i < 3; ++i) {
+      if (i != longest && length[i] <= 0.6 * length[longest]) {
+        const Index a = t[i], b = t[(i + 1) % 3];
+        const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
+        if (on_edge.size() != 2 || !link_condition(m_, faces_of_[a], faces_of_[b], on_edge, a, b)) continue;
+        const std::vector<std::int32_t> tags_a = tags_of(a), tags_b = tags_of(b);
+        const Vec3 &pa = m_.vertices[a], &pb = m_.vertices[b];
+        auto add = [&](Index u, Index v, const Vec3& target, int rank) {
+          Edit e = collapse(u, v, on_edge, target);
+          e.rank = rank;
+          if (evaluate(e)) options.push_back(std::move(e));
+        };
+        auto within = [](const std::vector<std::int32_t>& x, const std::vector<std::int32_t>& y) {
+          return std::includes(y.begin(), y.end(), x.begin(), x.end());
+        };
+        add(a, b, pa, within(tags_b, tags_a) ? 0 : 1);
+        add(b, a, pb, within(tags_a, tags_b) ? 0 : 1);
+        add(a, b, 0.5 * (pa + pb), tags_a == tags_b ? 0 : 1);
       }
     }
-    // Moved faces against each other.
-    for (std::size_t i = 0; i < moved.size(); ++i)
-      for (std::size_t j = i + 1; j < moved.size(); ++j) {
-        const auto r = relation(moved[i], moved[j]);
-        if (r == geometry::TrianglePairRelation::intersecting || r == geometry::TrianglePairRelation::duplicate)
-          return false;
-      }
+    for (int i = 0; i < 3; ++i) {
+      Edit e = flip(f, t[i], t[(i + 1) % 3]);
+      if (!e.changed.empty() && evaluate(e)) options.push_back(std::move(e));
+    }
+    if (try_best(options)) return true;
+    if (merge_cluster(f)) return true;
+    options.clear();
+    for (Index v : t) move_candidates(v, options);
+    return try_best(options);
+  }
 
-    // Commit.
-    for (std::uint32_t g : on_edge) {
-      grid_->erase(g);
-      alive_[g] = 0;
-      for (Index w : m_.faces[g]) std::erase(faces_of_[w], g);
-    }
-    for (std::size_t k = 0; k < moving.size(); ++k) {
-      const std::uint32_t g = moving[k];
-      grid_->erase(g);
-      m_.faces[g] = moved[k];
-      grid_->insert(g);
-      faces_of_[u].push_back(g);
-    }
-    faces_of_[v].clear();
-    area_drift_ += area_change;
-    return true;
+  // The best option that passes the exact test: first whatever reaches the target angle,
+  // seams kept before seams moved; below it, the best angle.
+  bool try_best(std::vector<Edit>& options) {
+    const double goal = options_.min_angle_deg;
+    std::stable_sort(options.begin(), options.end(), [&](const Edit& x, const Edit& y) {
+      const double gx = std::min(x.after, goal), gy = std::min(y.after, goal);
+      if (gx != gy) return gx > gy;
+      if (x.rank != y.rank) return x.rank < y.rank;
+      if (std::abs(x.area_change) != std::abs(y.area_change)) return std::abs(x.area_change) < std::abs(y.area_change);
+      return x.after > y.after;
+    });
+    for (const Edit& e : options)
+      if (crosses_nothing(e)) {
+        commit(e);
+        return true;
+      }
+    return false;
   }
 
   void compact() {
@@ -335,9 +551,19 @@ class Collapser {
   std::vector<std::uint8_t> alive_;
   std::vector<std::vector<std::uint32_t>> faces_of_;
   std::unique_ptr<FaceGrid> grid_;
-  mutable Mesh probe_;
+  Mesh probe_;
+  std::vector<std::uint32_t> skip_, candidates_;
   double area_budget_ = 0, area_drift_ = 0;
-  std::size_t flips_ = 0;
+  std::size_t collapses_ = 0, flips_ = 0, moves_ = 0;
+  // While a compound edit is tried: its steps, and the angle of each face it touched as
+  // it was before.
+  struct Step {
+    Edit edit;
+    std::vector<Triangle> old_triangles;
+    Vec3 old_position;
+  };
+  std::vector<Step>* journal_ = nullptr;
+  std::unordered_map<std::uint32_t, double> first_angle_;
 };
 
 }  // namespace
@@ -346,7 +572,7 @@ CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options) {
   CleanupStats stats;
   stats.before = mesh_quality(mesh);
   stats.area_before = surface_area(mesh);
-  if (!mesh.faces.empty()) Collapser(mesh, options).run(stats);
+  if (!mesh.faces.empty()) Cleaner(mesh, options).run(stats);
   stats.after = mesh_quality(mesh);
   stats.area_after = surface_area(mesh);
   return stats;
