@@ -55,43 +55,61 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
 
   // Patches: sub-faces of one operand joined across edges that are not on an
   // intersection curve.
-  std::unordered_set<std::uint64_t> curve;
-  curve.reserve(intersection_edges.size() * 2);
-  for (auto [a, b] : intersection_edges) curve.insert(edge_key(a, b));
+  // An edge is on a curve only if both its ends are on both surfaces (cheap to test first).
+  auto on_curve = [&](std::uint32_t a, std::uint32_t b) {
+    if (!arr.on_both_surfaces[a] || !arr.on_both_surfaces[b]) return false;
+    return std::binary_search(intersection_edges.begin(), intersection_edges.end(),
+                              std::pair<std::uint32_t, std::uint32_t>(std::min(a, b), std::max(a, b)));
+  };
   DisjointSets patches(n);
   auto unite = [&](std::uint32_t x, std::uint32_t y) { patches.unite(x, y); };
-  // Pieces of cut faces meet along point-id edges: hash those (few). Whole faces meet
-  // their neighbours across input edges: the operands' edge table joins them directly.
-  std::unordered_map<std::uint64_t, std::uint32_t> piece_on_edge[2];
+  // Pieces of cut faces meet along point-id edges: sorted (edge, operand, piece) records
+  // pair them (few). Whole faces meet their neighbours across input edges: the operands'
+  // edge table joins them directly.
+  struct PieceEdge {
+    std::uint64_t key;
+    std::uint32_t operand_and_piece;  // operand in the top bit
+    auto operator<=>(const PieceEdge&) const = default;
+  };
+  std::vector<PieceEdge> piece_edges;
   for (std::uint32_t f = 0; f < ops.face_count(); ++f) {
     if (!split.cut[f]) continue;
-    const int operand = ops.operand_of_face(f);
+    const auto operand = static_cast<std::uint32_t>(ops.operand_of_face(f));
     for (std::uint32_t s = split.first_sub_face[f]; s < split.first_sub_face[f + 1]; ++s) {
       if (coincident[s]) continue;
       for (int i = 0; i < 3; ++i) {
-        const std::uint64_t key = edge_key(subs[s].points[i], subs[s].points[(i + 1) % 3]);
-        if (curve.count(key)) continue;
-        auto [it, inserted] = piece_on_edge[operand].try_emplace(key, s);
-        if (!inserted) unite(it->second, s);
+        const std::uint32_t a = subs[s].points[i], b = subs[s].points[(i + 1) % 3];
+        if (on_curve(a, b)) continue;
+        piece_edges.push_back({edge_key(a, b), operand << 31 | s});
       }
     }
   }
+  std::sort(piece_edges.begin(), piece_edges.end());
+  for (std::size_t k = 1; k < piece_edges.size(); ++k)
+    if (piece_edges[k].key == piece_edges[k - 1].key &&
+        piece_edges[k].operand_and_piece >> 31 == piece_edges[k - 1].operand_and_piece >> 31)
+      unite(piece_edges[k].operand_and_piece & 0x7fffffffu, piece_edges[k - 1].operand_and_piece & 0x7fffffffu);
+  auto piece_on_edge = [&](std::uint32_t operand, std::uint64_t key) -> std::uint32_t {
+    const auto it = std::lower_bound(piece_edges.begin(), piece_edges.end(), PieceEdge{key, operand << 31});
+    if (it == piece_edges.end() || it->key != key || it->operand_and_piece >> 31 != operand) return ~0u;
+    return it->operand_and_piece & 0x7fffffffu;
+  };
   for (std::uint32_t f = 0; f < ops.face_count(); ++f) {
     if (split.cut[f]) continue;
     const std::uint32_t s = split.first_sub_face[f];
     if (coincident[s]) continue;
-    const int operand = ops.operand_of_face(f);
+    const auto operand = static_cast<std::uint32_t>(ops.operand_of_face(f));
     for (std::uint32_t e : ops.face_edges(f)) {
       const auto& two = ops.edge_faces(e);
       const std::uint32_t g = two[0] == f ? two[1] : two[0];
       if (g == kNoFace) continue;  // the rest of the solid, outside the other's box
       const auto& ends = ops.edge_vertices(e);
-      const std::uint64_t key = edge_key(arr.vertex_point[ends[0]], arr.vertex_point[ends[1]]);
-      if (curve.count(key)) continue;
+      const std::uint32_t a = arr.vertex_point[ends[0]], b = arr.vertex_point[ends[1]];
+      if (on_curve(a, b)) continue;
       if (!split.cut[g]) {
         if (f < g && !coincident[split.first_sub_face[g]]) unite(s, split.first_sub_face[g]);
-      } else if (auto it = piece_on_edge[operand].find(key); it != piece_on_edge[operand].end()) {
-        unite(s, it->second);
+      } else if (const std::uint32_t piece = piece_on_edge(operand, edge_key(a, b)); piece != ~0u) {
+        unite(s, piece);
       }
     }
   }

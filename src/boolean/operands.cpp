@@ -8,7 +8,7 @@ namespace molsurf::boolean_engine {
 
 Operands::Operands(const Mesh& a, const Mesh& b) : Operands(a, b, a, b) {}
 
-Operands::Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b)
+Operands::Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b, bool allow_open)
     : a_(a),
       b_(b),
       solid_a_(solid_a),
@@ -20,7 +20,7 @@ Operands::Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh
   for (const Triangle& t : a.faces) faces_.push_back({t[0], t[1], t[2]});
   for (const Triangle& t : b.faces)
     faces_.push_back({t[0] + vertex_offset_b_, t[1] + vertex_offset_b_, t[2] + vertex_offset_b_});
-  build_edges(&a != &solid_a || &b != &solid_b);
+  build_edges(allow_open || &a != &solid_a || &b != &solid_b);
 }
 
 // Edges in order of (lower vertex, higher vertex), found in linear time: half-edges are

@@ -21,8 +21,10 @@ class Operands {
  public:
   // Two closed solids.
   Operands(const Mesh& a, const Mesh& b);
-  // Parts of the closed solids `solid_a` and `solid_b` (open edges allowed).
-  Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b);
+  // Parts of the closed solids `solid_a` and `solid_b` (open edges allowed). With
+  // `allow_open`, the operands may also be open surfaces themselves (the outer envelope,
+  // outer_envelope.hpp): an edge with one face is then a free boundary.
+  Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b, bool allow_open = false);
 
   const Mesh& mesh(int operand) const { return operand == 0 ? a_ : b_; }
   // The whole closed solid an operand is part of (for point-in-solid tests) and its box.

@@ -58,6 +58,13 @@ bool strictly_between(const Vec3& a, const Vec3& x, const Vec3& b) {
   return false;
 }
 
+// What rounding can have broken: a face with a rounded corner that is degenerate or a
+// sliver (a face of input corners only is a piece of a valid input face).
+bool needs_repair(const Mesh& m, const Triangle& t, const std::vector<std::uint8_t>& rounded) {
+  if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) return false;
+  return is_sliver(m, t) || degenerate(m, t);
+}
+
 class Repairer {
  public:
   // Indexes only the faces that rounding can have touched: those with a rounded corner,
@@ -65,17 +72,24 @@ class Repairer {
   Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
            const std::vector<std::uint8_t>& rounded, const std::vector<std::uint8_t>& frozen)
       : m_(m), operand_(operand), source_(source), frozen_(frozen), alive_(m.faces.size(), 1) {
-    // Two rings around the rounded faces: the crossing test of a sliver reads its 2-ring.
-    std::vector<std::uint8_t> near(m.vertices.size(), 0), nearer(m.vertices.size(), 0);
+    // Only faces near the ones rounding can have broken (degenerate faces, and slivers
+    // with a rounded corner) are indexed: three rings of faces around them, so the link
+    // condition, the moves of a collapse and the crossing counts around it (two rings)
+    // all see every face they read.
+    std::vector<std::uint8_t> mark(m.vertices.size(), 0), grown(m.vertices.size(), 0);
     for (const Triangle& t : m.faces)
-      if (rounded[t[0]] || rounded[t[1]] || rounded[t[2]])
-        for (Index v : t) nearer[v] = 1;
-    for (const Triangle& t : m.faces)
-      if (nearer[t[0]] || nearer[t[1]] || nearer[t[2]])
-        for (Index v : t) near[v] = 1;
+      if (needs_repair(m, t, rounded))
+        for (Index v : t) mark[v] = 1;
+    for (int ring = 0; ring < 3; ++ring) {
+      grown = mark;
+      for (const Triangle& t : m.faces)
+        if (mark[t[0]] || mark[t[1]] || mark[t[2]])
+          for (Index v : t) grown[v] = 1;
+      mark.swap(grown);
+    }
     for (std::uint32_t f = 0; f < m.faces.size(); ++f) {
       const Triangle& t = m.faces[f];
-      if (near[t[0]] || near[t[1]] || near[t[2]]) {
+      if (mark[t[0]] || mark[t[1]] || mark[t[2]]) {
         index_face(f);
         indexed_.push_back(f);
       }
@@ -348,7 +362,7 @@ RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operan
   bool any = false;
   for (const Triangle& t : mesh.faces) {
     if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
-    if (is_sliver(mesh, t) || degenerate(mesh, t)) {
+    if (needs_repair(mesh, t, rounded)) {
       any = true;
       break;
     }

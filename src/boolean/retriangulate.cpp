@@ -393,7 +393,7 @@ namespace molsurf::boolean_engine {
 
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
                                                                                 const FacePoints& points) {
-  static const double kSliverCosine = std::cos(1.0 * 3.141592653589793 / 180);  // 1 degree
+  static const double kSliverCosine = std::cos(0.1 * 3.141592653589793 / 180);  // 0.1 degree
   const int n = static_cast<int>(points.ids().size());
   const int m = static_cast<int>(face.boundary.size());
   if (n > 64) return std::nullopt;

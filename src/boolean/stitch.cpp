@@ -251,6 +251,13 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
 
 StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const std::vector<SubFace>& subs,
                               const std::vector<Side>& sides, BooleanOp op) {
+  std::vector<Keep> keep(subs.size());
+  for (std::size_t s = 0; s < subs.size(); ++s) keep[s] = select_sub_face(op, ops.operand_of_face(subs[s].face), sides[s]);
+  return stitch_sub_faces(ops, arr, subs, keep);
+}
+
+StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const std::vector<SubFace>& subs,
+                              const std::vector<Keep>& keeps) {
   StitchResult r;
   std::vector<std::uint32_t> vertex_of_point(arr.points.size(), ~0u);
   std::vector<std::uint32_t> point_of_vertex;
@@ -265,7 +272,7 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
   const bool tagged = ops.mesh(0).has_tags() || ops.mesh(1).has_tags();
   for (std::size_t s = 0; s < subs.size(); ++s) {
     const int operand = ops.operand_of_face(subs[s].face);
-    const Keep keep = select_sub_face(op, operand, sides[s]);
+    const Keep keep = keeps[s];
     if (keep == Keep::drop) continue;
     Triangle t{vertex(subs[s].points[0]), vertex(subs[s].points[1]), vertex(subs[s].points[2])};
     if (keep == Keep::keep_flipped) std::swap(t[1], t[2]);

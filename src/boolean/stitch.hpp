@@ -31,5 +31,9 @@ struct StitchResult {
 
 StitchResult stitch_sub_faces(const Operands& operands, const Arrangement& arrangement,
                               const std::vector<SubFace>& sub_faces, const std::vector<Side>& sides, BooleanOp op);
+// The same with the choice made per sub-face by the caller (the outer envelope keeps
+// what is visible from outside, outer_envelope.hpp).
+StitchResult stitch_sub_faces(const Operands& operands, const Arrangement& arrangement,
+                              const std::vector<SubFace>& sub_faces, const std::vector<Keep>& keep);
 
 }  // namespace molsurf::boolean_engine
