@@ -34,6 +34,9 @@ struct BooleanStats {
   std::size_t exact_ray_casts = 0;     // of those, rays from an exact rational point
   std::size_t split_vertices = 0;      // vertices duplicated where solids only touch
   std::size_t output_faces = 0;
+  // Outer envelope only (union_outer_envelope): components of pieces joined across edges,
+  // those kept (not enclosed), and kept pieces seen from both sides (open sheets).
+  std::size_t envelope_components = 0, envelope_components_kept = 0, two_sided_faces = 0;
   BooleanTimings seconds;
 };
 
@@ -45,6 +48,16 @@ struct BooleanResult {
 };
 
 BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op);
+
+// The outer envelope of a and b (paper §2.4, visibility): the pieces of both surfaces
+// seen from outside, found by a flood fill from the extreme piece. For two closed solids
+// it is the union without its cavities (stats.seconds.classify times the flood fill).
+// Either operand may be open (2-manifold with a free boundary, no self-intersection):
+// then the result is open, and pieces seen from both sides (an open sheet outside the
+// other surface) are kept once, as given; where such a sheet meets a closed part, an
+// edge has three faces. Faces keep their operand's orientation wherever outside is the
+// side their normal points to, and are flipped where only their back is seen.
+BooleanResult union_outer_envelope(const Mesh& a, const Mesh& b);
 
 const char* boolean_op_name(BooleanOp op);
 

@@ -9,6 +9,7 @@
 #include "boolean/cull.hpp"
 #include "boolean/intersect.hpp"
 #include "boolean/operands.hpp"
+#include "boolean/outer_envelope.hpp"
 #include "boolean/split.hpp"
 #include "boolean/stitch.hpp"
 
@@ -83,6 +84,45 @@ StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, co
   return stitched;
 }
 
+// The outer envelope: the steps up to split on the whole operands (passive faces are
+// part of the envelope too, and may be open), then the flood fill instead of classify.
+StitchResult run_outer_envelope(const Mesh& a, const Mesh& b, BooleanStats& stats, StepTimer& timer) {
+  const Operands operands(a, b, a, b, /*allow_open=*/true);
+  const auto candidates = cull_face_pairs(operands);
+  stats.candidate_pairs = candidates.size();
+  stats.seconds.cull += timer.lap();
+
+  std::vector<PairIntersection> pairs(candidates.size());
+  const auto pair_count = static_cast<std::int64_t>(candidates.size());
+#pragma omp parallel for schedule(dynamic, 256) if (pair_count > 2048)
+  for (std::int64_t k = 0; k < pair_count; ++k)
+    pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second);
+  std::erase_if(pairs, [](const PairIntersection& p) { return p.empty(); });
+  stats.intersecting_pairs = pairs.size();
+  stats.coplanar_pairs = 0;
+  for (const auto& p : pairs) stats.coplanar_pairs += p.coplanar;
+  const Arrangement arrangement = build_arrangement(operands, pairs);
+  stats.intersection_points = arrangement.intersection_point_count;
+  stats.seconds.intersect += timer.lap();
+
+  const SplitResult split = split_faces(operands, arrangement);
+  stats.split_faces = split.split_faces;
+  stats.seconds.split += timer.lap();
+
+  const EnvelopeSelection envelope = select_outer_envelope(operands, arrangement, split);
+  stats.envelope_components = envelope.components;
+  stats.envelope_components_kept = envelope.components_kept;
+  stats.two_sided_faces = envelope.two_sided_faces;
+  stats.seconds.classify += timer.lap();
+
+  // Sheets seen from both sides (open operands) meet the rest along fins: no 2-manifold there.
+  StitchResult stitched =
+      stitch_sub_faces(operands, arrangement, split.sub_faces, envelope.keep, envelope.two_sided_faces == 0);
+  stats.split_vertices = stitched.split_vertices;
+  stats.seconds.stitch += timer.lap();
+  return stitched;
+}
+
 void take_whole(BooleanResult& result, StitchResult&& stitched) {
   result.mesh = std::move(stitched.mesh);
   result.face_operand = std::move(stitched.face_operand);
@@ -90,6 +130,17 @@ void take_whole(BooleanResult& result, StitchResult&& stitched) {
 }
 
 }  // namespace
+
+BooleanResult union_outer_envelope(const Mesh& a, const Mesh& b) {
+  BooleanResult result;
+  result.stats.faces_a = a.faces.size();
+  result.stats.faces_b = b.faces.size();
+  result.stats.active_faces = a.faces.size() + b.faces.size();
+  StepTimer timer;
+  take_whole(result, run_outer_envelope(a, b, result.stats, timer));
+  result.stats.output_faces = result.mesh.faces.size();
+  return result;
+}
 
 BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   using namespace boolean_engine;

@@ -33,8 +33,12 @@ void Operands::build_edges(bool allow_open) {
     const auto& t = faces_[h / 3];
     return std::minmax(t[h % 3], t[(h % 3 + 1) % 3]);
   };
-  std::vector<std::uint32_t> start(vertices + 1, 0);
-  for (std::uint32_t h = 0; h < half_edge_count; ++h) ++start[ends(h).first + 1];
+  std::vector<std::uint32_t> start(vertices + 1, 0), higher_end(half_edge_count);
+  for (std::uint32_t h = 0; h < half_edge_count; ++h) {
+    const auto [lo, hi] = ends(h);
+    ++start[lo + 1];
+    higher_end[h] = hi;
+  }
   for (std::uint32_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
   std::vector<std::uint32_t> by_lower(half_edge_count);
   {
@@ -48,13 +52,12 @@ void Operands::build_edges(bool allow_open) {
     const auto first = by_lower.begin() + start[v], last = by_lower.begin() + start[v + 1];
     // Half-edge ids grow with the face, so (higher vertex, id) is the order of the old sort.
     std::sort(first, last, [&](std::uint32_t x, std::uint32_t y) {
-      const std::uint32_t hx = ends(x).second, hy = ends(y).second;
-      return hx != hy ? hx < hy : x < y;
+      return higher_end[x] != higher_end[y] ? higher_end[x] < higher_end[y] : x < y;
     });
     for (auto k = first; k != last;) {
-      const std::uint32_t higher = ends(*k).second;
+      const std::uint32_t higher = higher_end[*k];
       auto end = k;
-      while (end != last && ends(*end).second == higher) ++end;
+      while (end != last && higher_end[*end] == higher) ++end;
       const auto count = end - k;
       if (count > 2 || (count == 1 && !allow_open))
         throw std::invalid_argument("boolean: an operand is not a closed 2-manifold (an edge has " +

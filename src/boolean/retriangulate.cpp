@@ -101,8 +101,17 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
   for (auto [s_id, t_id] : segments) {
     const int s = points.local(s_id), t = points.local(t_id);
     std::vector<int> inside;
+    // A point strictly inside the segment lies in its box: intervals rule most out.
+    auto outside_box = [&](int c) {
+      for (int axis : {pr.u, pr.v}) {
+        const auto &is = points.point(s).coordinate(axis), &it = points.point(t).coordinate(axis);
+        const auto& ic = points.point(c).coordinate(axis);
+        if (ic.hi < std::min(is.lo, it.lo) || ic.lo > std::max(is.hi, it.hi)) return true;
+      }
+      return false;
+    };
     for (int c = 0; c < n; ++c) {
-      if (c == s || c == t) continue;
+      if (c == s || c == t || outside_box(c)) continue;
       if (points.orient(s, t, c) != 0) continue;
       if (strictly_between(s, c, t)) inside.push_back(c);
     }

@@ -257,7 +257,7 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
 }
 
 StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const std::vector<SubFace>& subs,
-                              const std::vector<Keep>& keeps) {
+                              const std::vector<Keep>& keeps, bool keep_sheets_apart) {
   StitchResult r;
   std::vector<std::uint32_t> vertex_of_point(arr.points.size(), ~0u);
   std::vector<std::uint32_t> point_of_vertex;
@@ -290,7 +290,7 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
       frozen[v] = point_of_vertex[v] < ops.vertex_count() && ops.frozen(point_of_vertex[v]);
   }
   r.repair = repair_rounding(r.mesh, r.face_operand, r.face_source, rounded, frozen);
-  r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
+  if (keep_sheets_apart) r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
   // Collapses leave vertices no face uses: renumber in order of first use.
   std::vector<Index> renumber(r.mesh.vertices.size(), ~Index{0});
   std::vector<Vec3> used;

@@ -32,8 +32,11 @@ struct StitchResult {
 StitchResult stitch_sub_faces(const Operands& operands, const Arrangement& arrangement,
                               const std::vector<SubFace>& sub_faces, const std::vector<Side>& sides, BooleanOp op);
 // The same with the choice made per sub-face by the caller (the outer envelope keeps
-// what is visible from outside, outer_envelope.hpp).
+// what is visible from outside, outer_envelope.hpp). Without `keep_sheets_apart`, touching
+// vertices are not duplicated (an open sheet seen from both sides makes three faces meet
+// at an edge: no 2-manifold exists there, and the material sectors are not defined).
 StitchResult stitch_sub_faces(const Operands& operands, const Arrangement& arrangement,
-                              const std::vector<SubFace>& sub_faces, const std::vector<Keep>& keep);
+                              const std::vector<SubFace>& sub_faces, const std::vector<Keep>& keep,
+                              bool keep_sheets_apart = true);
 
 }  // namespace molsurf::boolean_engine

@@ -19,41 +19,82 @@ void BooleanCommand::add_options(CLI::App& app) {
       ->check(CLI::ExistingFile);
   app.add_option("B", b, "Second mesh, same requirements")->required()->check(CLI::ExistingFile);
   app.add_option("-o,--output", output, "Result mesh; the format follows the extension")->required();
+  app.add_flag("--outer-only", outer_only,
+               "union only: keep the outer envelope (what is seen from outside: no cavities); "
+               "A and B may then be open surfaces");
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
 }
+
+namespace {
+
+// An operand the outer envelope accepts: valid, or open but otherwise sound (2-manifold,
+// oriented, no degenerate face, no self-intersection).
+bool open_but_sound(const MeshCheck& c) {
+  return c.nonmanifold_edges == 0 && c.nonmanifold_vertices == 0 && c.misoriented_edges == 0 &&
+         c.degenerate_faces == 0 && c.duplicate_faces == 0 && c.intersecting_pairs == 0;
+}
+
+}  // namespace
 
 int BooleanCommand::run() const {
   mesh_format_from_path(output);  // reject an unknown extension before any work
   const BooleanOp op = operation == "union"          ? BooleanOp::union_
                        : operation == "intersection" ? BooleanOp::intersection
                                                      : BooleanOp::difference;
+  if (outer_only && op != BooleanOp::union_)
+    throw molsurf::Error("--outer-only keeps the outer envelope of a union; it does not apply to " + operation);
   const Mesh mesh_a = read_mesh(a), mesh_b = read_mesh(b);
   // The engine's contract: refuse operands it cannot promise a valid result for.
+  bool open_input = false;
   for (const auto& [mesh, path] : {std::pair{&mesh_a, &a}, std::pair{&mesh_b, &b}}) {
     const MeshCheck c = check_mesh(*mesh);
-    if (!c.valid()) {
-      std::string why;
-      for (const std::string& d : c.defects()) why += "\n  - " + d;
-      throw molsurf::Error(path->string() + ": not a valid closed surface, so no Boolean is defined:" + why);
+    if (c.valid()) continue;
+    if (outer_only && open_but_sound(c)) {
+      open_input = true;
+      continue;
     }
+    std::string why;
+    for (const std::string& d : c.defects()) why += "\n  - " + d;
+    throw molsurf::Error(path->string() +
+                         (outer_only ? ": not a valid surface (closed or open), so no outer envelope is defined:"
+                                     : ": not a valid closed surface, so no Boolean is defined:") +
+                         why);
   }
-  const BooleanResult r = boolean(mesh_a, mesh_b, op);
+  const BooleanResult r = outer_only ? union_outer_envelope(mesh_a, mesh_b) : boolean(mesh_a, mesh_b, op);
   write_mesh(output, r.mesh);
   const MeshCheck check = check_mesh(r.mesh);
+  // From an open operand the envelope is open: its free boundary and the edges where a
+  // sheet seen from both sides meets the rest are expected there, nothing else.
+  const bool open_result = open_input && !check.valid() && check.misoriented_edges == 0 &&
+                           check.degenerate_faces == 0 && check.duplicate_faces == 0 &&
+                           check.intersecting_pairs == 0;
   if (!quiet) {
     const BooleanStats& s = r.stats;
-    std::printf("%s of %s (%zu faces) and %s (%zu faces) -> %s\n", boolean_op_name(op), a.string().c_str(),
-                s.faces_a, b.string().c_str(), s.faces_b, output.string().c_str());
+    std::printf("%s%s of %s (%zu faces) and %s (%zu faces) -> %s\n", boolean_op_name(op),
+                outer_only ? " (outer envelope)" : "", a.string().c_str(), s.faces_a, b.string().c_str(), s.faces_b,
+                output.string().c_str());
     if (r.mesh.faces.empty()) std::printf("the result is empty: written with zero faces\n");
     std::printf("  candidate pairs %zu, intersecting %zu (coplanar %zu), intersection points %zu, faces split %zu\n",
                 s.candidate_pairs, s.intersecting_pairs, s.coplanar_pairs, s.intersection_points, s.split_faces);
+    if (outer_only)
+      std::printf("  outer envelope: kept %zu faces; %zu of %zu connected parts seen from outside, %zu enclosed "
+                  "(dropped with every cavity)\n",
+                  s.output_faces, s.envelope_components_kept, s.envelope_components,
+                  s.envelope_components - s.envelope_components_kept);
+    if (s.two_sided_faces)
+      std::printf("  %zu faces of open sheets are seen from both sides (kept once, as given)\n", s.two_sided_faces);
     if (s.split_vertices) std::printf("  touching vertices duplicated: %zu\n", s.split_vertices);
-    std::printf("  time (ms): cull %.2f  intersect %.2f  split %.2f  classify %.2f  stitch %.2f  total %.2f\n",
-                1e3 * s.seconds.cull, 1e3 * s.seconds.intersect, 1e3 * s.seconds.split, 1e3 * s.seconds.classify,
-                1e3 * s.seconds.stitch, 1e3 * s.seconds.total());
+    std::printf("  time (ms): cull %.2f  intersect %.2f  split %.2f  %s %.2f  stitch %.2f  total %.2f\n",
+                1e3 * s.seconds.cull, 1e3 * s.seconds.intersect, 1e3 * s.seconds.split,
+                outer_only ? "flood fill" : "classify", 1e3 * (s.seconds.classify), 1e3 * s.seconds.stitch,
+                1e3 * s.seconds.total());
     std::cout << format_mesh_check(check, output.string());
+    if (open_result)
+      std::printf("the result is an open surface, as an open operand makes it: %zu boundary edges, %zu edges where "
+                  "a two-sided sheet meets the rest (expected, not a defect)\n",
+                  check.boundary_edges, check.nonmanifold_edges);
   }
-  return check.valid() ? 0 : 1;
+  return check.valid() || open_result ? 0 : 1;
 }
 
 }  // namespace molsurf::cli

@@ -39,6 +39,7 @@ struct CheckCommand {
 struct BooleanCommand {
   std::string operation;
   std::filesystem::path a, b, output;
+  bool outer_only = false;  // union only: the outer envelope (open operands allowed)
   bool quiet = false;
 
   void add_options(CLI::App& app);
