@@ -1,6 +1,7 @@
 // The union engine's pipeline: cull, intersect, split, classify, stitch (paper §2.2-2.4).
 #include "molsurf/boolean.hpp"
 
+#include <array>
 #include <chrono>
 
 #include "boolean/active_part.hpp"
@@ -46,9 +47,9 @@ namespace {
 // The five steps on parts of the solids a and b (or on the solids themselves).
 using namespace boolean_engine;
 
-StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, const Mesh& b, BooleanOp op,
-                       BooleanStats& stats, StepTimer& timer) {
-  const Operands operands(part_a, part_b, a, b);
+StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, const Mesh& b,
+                       const std::array<BoundingBox, 2>& boxes, BooleanOp op, BooleanStats& stats, StepTimer& timer) {
+  const Operands operands(part_a, part_b, a, b, boxes);
   const auto candidates = cull_face_pairs(operands);
   stats.candidate_pairs = candidates.size();
   stats.seconds.cull += timer.lap();
@@ -150,23 +151,24 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   stats.faces_b = b.faces.size();
   StepTimer timer;
 
-  const ActivePart part[2] = {active_part(a, bounding_box(b)), active_part(b, bounding_box(a))};
+  const std::array<BoundingBox, 2> boxes{bounding_box(a), bounding_box(b)};
+  const ActivePart part[2] = {active_part(a, boxes[1]), active_part(b, boxes[0])};
   stats.active_faces = (part[0].whole ? a.faces.size() : part[0].mesh.faces.size()) +
                        (part[1].whole ? b.faces.size() : part[1].mesh.faces.size());
   stats.seconds.cull += timer.lap();
   if (part[0].whole && part[1].whole) {
-    take_whole(result, run_steps(a, b, a, b, op, stats, timer));
+    take_whole(result, run_steps(a, b, a, b, boxes, op, stats, timer));
     stats.output_faces = result.mesh.faces.size();
     return result;
   }
   const Mesh* solid[2] = {&a, &b};
-  StitchResult stitched = run_steps(part[0].whole ? a : part[0].mesh, part[1].whole ? b : part[1].mesh, a, b, op,
-                                    stats, timer);
+  StitchResult stitched = run_steps(part[0].whole ? a : part[0].mesh, part[1].whole ? b : part[1].mesh, a, b,
+                                    boxes, op, stats, timer);
   if (stitched.repair.refused_frozen > 0) {
     // A rounding repair needed a vertex that the passive faces share: redo it whole.
     stats.whole_reruns = 1;
     stats.active_faces = a.faces.size() + b.faces.size();
-    take_whole(result, run_steps(a, b, a, b, op, stats, timer));
+    take_whole(result, run_steps(a, b, a, b, boxes, op, stats, timer));
     stats.output_faces = result.mesh.faces.size();
     return result;
   }

@@ -9,11 +9,15 @@ namespace molsurf::boolean_engine {
 Operands::Operands(const Mesh& a, const Mesh& b) : Operands(a, b, a, b) {}
 
 Operands::Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b, bool allow_open)
+    : Operands(a, b, solid_a, solid_b, {bounding_box(solid_a), bounding_box(solid_b)}, allow_open) {}
+
+Operands::Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b,
+                   const std::array<BoundingBox, 2>& solid_boxes, bool allow_open)
     : a_(a),
       b_(b),
       solid_a_(solid_a),
       solid_b_(solid_b),
-      solid_box_{bounding_box(solid_a), bounding_box(solid_b)},
+      solid_box_(solid_boxes),
       vertex_offset_b_(static_cast<std::uint32_t>(a.vertices.size())),
       face_offset_b_(static_cast<std::uint32_t>(a.faces.size())) {
   faces_.reserve(a.faces.size() + b.faces.size());

@@ -25,6 +25,9 @@ class Operands {
   // `allow_open`, the operands may also be open surfaces themselves (the outer envelope,
   // outer_envelope.hpp): an edge with one face is then a free boundary.
   Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b, bool allow_open = false);
+  // The same, with the solids' bounding boxes already known (each costs a pass over a solid).
+  Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b,
+           const std::array<BoundingBox, 2>& solid_boxes, bool allow_open = false);
 
   const Mesh& mesh(int operand) const { return operand == 0 ? a_ : b_; }
   // The whole closed solid an operand is part of (for point-in-solid tests) and its box.
