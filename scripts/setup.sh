@@ -7,7 +7,7 @@ preset="${1:-release}"
 
 packages=(build-essential cmake ninja-build pkg-config
   gemmi-dev tao-pegtl-dev zlib1g-dev libeigen3-dev libvtk9-dev libcli11-dev
-  googletest libgtest-dev libgmp-dev)
+  googletest libgtest-dev libgmp-dev libmimalloc-dev)
 
 missing=()
 for p in "${packages[@]}"; do
