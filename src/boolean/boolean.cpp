@@ -44,12 +44,15 @@ class StepTimer {
 
 namespace {
 
-// The five steps on parts of the solids a and b (or on the solids themselves).
 using namespace boolean_engine;
 
-StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, const Mesh& b,
-                       const std::array<BoundingBox, 2>& boxes, BooleanOp op, BooleanStats& stats, StepTimer& timer) {
-  const Operands operands(part_a, part_b, a, b, boxes);
+struct SplitArrangement {
+  Arrangement arrangement;
+  SplitResult split;
+};
+
+// The first three steps: cull, intersect, split.
+SplitArrangement cull_intersect_split(const Operands& operands, BooleanStats& stats, StepTimer& timer) {
   const auto candidates = cull_face_pairs(operands);
   stats.candidate_pairs = candidates.size();
   stats.seconds.cull += timer.lap();
@@ -63,13 +66,22 @@ StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, co
   stats.intersecting_pairs = pairs.size();
   stats.coplanar_pairs = 0;
   for (const auto& p : pairs) stats.coplanar_pairs += p.coplanar;
-  const Arrangement arrangement = build_arrangement(operands, pairs);
+  Arrangement arrangement = build_arrangement(operands, pairs);
   stats.intersection_points = arrangement.intersection_point_count;
   stats.seconds.intersect += timer.lap();
 
-  const SplitResult split = split_faces(operands, arrangement);
+  SplitResult split = split_faces(operands, arrangement);
   stats.split_faces = split.split_faces;
   stats.seconds.split += timer.lap();
+  return {std::move(arrangement), std::move(split)};
+}
+
+// The five steps on parts of the solids a and b (or on the solids themselves).
+
+StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, const Mesh& b,
+                       const std::array<BoundingBox, 2>& boxes, BooleanOp op, BooleanStats& stats, StepTimer& timer) {
+  const Operands operands(part_a, part_b, a, b, boxes);
+  const auto [arrangement, split] = cull_intersect_split(operands, stats, timer);
 
   const Classification classes = classify_sub_faces(operands, arrangement, split);
   stats.ray_casts = classes.ray_casts;
@@ -89,26 +101,7 @@ StitchResult run_steps(const Mesh& part_a, const Mesh& part_b, const Mesh& a, co
 // part of the envelope too, and may be open), then the flood fill instead of classify.
 StitchResult run_outer_envelope(const Mesh& a, const Mesh& b, BooleanStats& stats, StepTimer& timer) {
   const Operands operands(a, b, a, b, /*allow_open=*/true);
-  const auto candidates = cull_face_pairs(operands);
-  stats.candidate_pairs = candidates.size();
-  stats.seconds.cull += timer.lap();
-
-  std::vector<PairIntersection> pairs(candidates.size());
-  const auto pair_count = static_cast<std::int64_t>(candidates.size());
-#pragma omp parallel for schedule(dynamic, 256) if (pair_count > 2048)
-  for (std::int64_t k = 0; k < pair_count; ++k)
-    pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second);
-  std::erase_if(pairs, [](const PairIntersection& p) { return p.empty(); });
-  stats.intersecting_pairs = pairs.size();
-  stats.coplanar_pairs = 0;
-  for (const auto& p : pairs) stats.coplanar_pairs += p.coplanar;
-  const Arrangement arrangement = build_arrangement(operands, pairs);
-  stats.intersection_points = arrangement.intersection_point_count;
-  stats.seconds.intersect += timer.lap();
-
-  const SplitResult split = split_faces(operands, arrangement);
-  stats.split_faces = split.split_faces;
-  stats.seconds.split += timer.lap();
+  const auto [arrangement, split] = cull_intersect_split(operands, stats, timer);
 
   const EnvelopeSelection envelope = select_outer_envelope(operands, arrangement, split);
   stats.envelope_components = envelope.components;

@@ -19,6 +19,8 @@ namespace {
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
 
+}  // namespace
+
 // A sub-face lies in coplanar face g of the other operand when its three corners are in
 // the closed triangle g (the constraints include g's boundary, so a piece is either
 // inside g or has no interior point in common with it).
@@ -35,8 +37,6 @@ bool inside_partner(const Operands& ops, const Arrangement& arr, const SubFace& 
         return false;
   return true;
 }
-
-}  // namespace
 
 Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, const SplitResult& split) {
   const std::vector<SubFace>& subs = split.sub_faces;

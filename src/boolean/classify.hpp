@@ -30,6 +30,10 @@ struct Classification {
 
 struct SplitResult;
 
+// A sub-face lies in the coplanar face g of the other operand (all corners in the closed
+// triangle g, exactly).
+bool inside_partner(const Operands& operands, const Arrangement& arrangement, const SubFace& sub_face, std::uint32_t g);
+
 Classification classify_sub_faces(const Operands& operands, const Arrangement& arrangement, const SplitResult& split);
 
 }  // namespace molsurf::boolean_engine

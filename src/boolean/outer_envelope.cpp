@@ -80,22 +80,6 @@ int compare_points(const Arrangement& arr, ExactPoints& exact, std::uint32_t p, 
   return 0;
 }
 
-// A sub-face lies in coplanar face g of the other operand when its three corners are in
-// the closed triangle g (the split constrains every face to its coplanar partners' edges).
-bool inside_partner(const Operands& ops, const Arrangement& arr, const SubFace& s, std::uint32_t g) {
-  const auto& f = ops.face(s.face);
-  const Projection pr = face_projection(ops.vertex(f[0]), ops.vertex(f[1]), ops.vertex(f[2]));
-  const auto& gv = ops.face(g);
-  std::array<geometry::ImplicitPoint, 3> corner;
-  for (int i = 0; i < 3; ++i) corner[i] = geometry::ImplicitPoint::explicit_point(ops.vertex(gv[i]));
-  const int orientation = geometry::orient2d(corner[0], corner[1], corner[2], pr.u, pr.v);
-  for (std::uint32_t p : s.points)
-    for (int i = 0; i < 3; ++i)
-      if (geometry::orient2d(corner[i], corner[(i + 1) % 3], arr.points[p], pr.u, pr.v) * orientation < 0)
-        return false;
-  return true;
-}
-
 struct OrientedPiece {
   std::uint32_t sub_face;
   int back;  // 0: seen from the side its normal points to, 1: from the other side
