@@ -459,8 +459,15 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   // Every interior point lies on a polyline walked once in each direction (no loops).
   if (interior_visits != 2 * static_cast<std::size_t>(n - m)) return std::nullopt;
 
+  // Points known to be collinear (one edge of the face, one intersection segment): any
+  // three of a set have orientation 0 without arithmetic (and the filter could never
+  // certify that zero: it would go to the exact path).
+  std::vector<std::uint64_t> lines(n, 0);
+  for (std::size_t k = 0; k < face.collinear_sets.size() && k < 64; ++k)
+    for (std::uint32_t id : face.collinear_sets[k]) lines[points.local(id)] |= std::uint64_t{1} << k;
   std::vector<std::int8_t> memo(static_cast<std::size_t>(n) * n * n, 2);
   auto orient = [&](int a, int b, int c) {
+    if (lines[a] & lines[b] & lines[c]) return 0;
     int sign = 1;
     if (a > b) std::swap(a, b), sign = -sign;
     if (b > c) std::swap(b, c), sign = -sign;
