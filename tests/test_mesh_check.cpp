@@ -218,6 +218,27 @@ TEST(MeshCheck, CavityIsValid) {
   expect_consistent(c);
 }
 
+// Far from the origin, a tiny cavity's volume summed about the origin is all rounding
+// (terms of 1e9 for a volume of 1e-13): its sign must still come out right, exactly.
+TEST(MeshCheck, TinyCavityFarFromTheOriginIsValid) {
+  const Vec3 lo{1000.1, 1000.3, 999.7};
+  const Mesh cavity = flipped(tetrahedron(lo + Vec3{0.31, 0.47, 0.53}, 1e-4));
+  const MeshCheck c = check_mesh(joined(cube(lo, 1), cavity));
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_EQ(c.inward_components, 0u);
+  EXPECT_TRUE(c.valid());
+  expect_consistent(c);
+}
+
+TEST(MeshCheck, TinyInsideOutShellFarFromTheOriginIsInward) {
+  const Vec3 lo{1000.1, 1000.3, 999.7};
+  const Mesh inside_out = flipped(tetrahedron(lo + Vec3{3.31, 0.47, 0.53}, 1e-4));  // outside the cube
+  const MeshCheck c = check_mesh(joined(cube(lo, 1), inside_out));
+  EXPECT_EQ(c.inward_components, 1u);
+  EXPECT_FALSE(c.valid());
+  expect_consistent(c);
+}
+
 TEST(MeshCheck, DegenerateFaces) {
   Mesh m = cube();
   m.faces.push_back({0, 0, 1});  // repeated index: left out of the topology
