@@ -8,24 +8,22 @@
 
 #include "io/atomic_file.hpp"
 #include "io/json_writer.hpp"
+#include "mesh/component_volume.hpp"
 #include "molsurf/report.hpp"
 
 namespace molsurf {
 
 std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
-  // One pass over the faces; volume relative to the mesh's box centre (as signed_volume).
+  // Volumes about each component's own vertex, with an exact sign (mesh/component_volume.hpp).
   const Components parts = connected_components(mesh);
-  const BoundingBox box = bounding_box(mesh);
-  const Vec3 origin = 0.5 * (box.min + box.max);
+  const ComponentVolumes volumes = component_volumes(mesh, parts);
   std::vector<ComponentMeasure> out(parts.count);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     ComponentMeasure& c = out[parts.face_component[f]];
-    const Triangle& t = mesh.faces[f];
-    const Vec3 a = mesh.vertices[t[0]] - origin, b = mesh.vertices[t[1]] - origin, d = mesh.vertices[t[2]] - origin;
     ++c.faces;
     c.area += face_area(mesh, f);
-    c.volume += dot(a, cross(b, d)) / 6;
   }
+  for (std::size_t c = 0; c < parts.count; ++c) out[c].volume = volumes.volume[c];
   std::stable_sort(out.begin(), out.end(), [](const ComponentMeasure& a, const ComponentMeasure& b) {
     if (a.cavity() != b.cavity()) return !a.cavity();
     return a.area > b.area;
@@ -35,15 +33,11 @@ std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
 
 Mesh outer_surface_only(const Mesh& mesh) {
   const Components parts = connected_components(mesh);
-  std::vector<double> six_volume(parts.count, 0);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const Triangle& t = mesh.faces[f];
-    six_volume[parts.face_component[f]] += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]]));
-  }
+  const std::vector<int> sign = component_volumes(mesh, parts).sign;
   Mesh out;
   out.vertices = mesh.vertices;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    if (six_volume[parts.face_component[f]] <= 0) continue;
+    if (sign[parts.face_component[f]] <= 0) continue;
     out.faces.push_back(mesh.faces[f]);
     if (mesh.has_tags()) out.face_tags.push_back(mesh.face_tags[f]);
   }

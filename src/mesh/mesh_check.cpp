@@ -31,12 +31,12 @@
 #include <string>
 #include <vector>
 
-#include "geometry/exact_integers.hpp"
 #include "geometry/face_bvh.hpp"
 #include "geometry/ray_parity.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "molsurf/error.hpp"
+#include "mesh/component_volume.hpp"
 
 namespace molsurf {
 
@@ -295,52 +295,6 @@ void check_self_intersections(const Mesh& mesh, const std::vector<std::uint8_t>&
 }
 
 // Six times the signed volume contributed by one face (origin-based divergence sum).
-// The sign of each component's volume, exactly. Each component's volume is summed
-// relative to one of its own vertices (terms scale with the component, not with its
-// distance from the origin: a cavity of 1e-8 A^3 far from the origin has the right sign);
-// when the floating-point sum is within its error bound of zero, the sum is redone
-// exactly in integers (every double is an integer times a power of two).
-std::vector<int> component_volume_signs(const Mesh& mesh, const Components& components,
-                                        const std::vector<std::vector<std::uint32_t>>& faces_of) {
-  std::vector<int> sign(components.count, 0);
-  constexpr double eps = std::numeric_limits<double>::epsilon();
-  for (std::size_t c = 0; c < components.count; ++c) {
-    const auto& faces = faces_of[c];
-    if (faces.empty()) continue;
-    const Vec3 r = mesh.vertices[mesh.faces[faces[0]][0]];
-    double sum = 0, magnitude = 0;
-    for (std::uint32_t f : faces) {
-      const Triangle& t = mesh.faces[f];
-      const Vec3 a = mesh.vertices[t[0]] - r, b = mesh.vertices[t[1]] - r, d = mesh.vertices[t[2]] - r;
-      sum += dot(a, cross(b, d));
-      auto l1 = [](const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); };
-      magnitude += l1(a) * l1(b) * l1(d);
-    }
-    // Rounding of the differences, the products and the sum: a generous bound.
-    const double bound = (static_cast<double>(faces.size()) + 64) * eps * magnitude;
-    if (sum > bound) {
-      sign[c] = 1;
-    } else if (sum < -bound) {
-      sign[c] = -1;
-    } else {
-      std::vector<double> values;
-      for (std::uint32_t f : faces)
-        for (Index v : mesh.faces[f]) values.insert(values.end(), {mesh.vertices[v].x, mesh.vertices[v].y, mesh.vertices[v].z});
-      const int exponent = geometry::common_exponent(values);
-      const geometry::IntVec ir = geometry::scaled(r, exponent);
-      mpz_class exact = 0;
-      for (std::uint32_t f : faces) {
-        const Triangle& t = mesh.faces[f];
-        exact += geometry::det3(geometry::scaled(mesh.vertices[t[1]], exponent) - ir,
-                                geometry::scaled(mesh.vertices[t[2]], exponent) - ir,
-                                geometry::scaled(mesh.vertices[t[0]], exponent) - ir);
-      }
-      sign[c] = sgn(exact);
-    }
-  }
-  return sign;
-}
-
 bool box_contains(const BoundingBox& outer, const BoundingBox& inner) {
   return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
          inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
@@ -359,7 +313,7 @@ void check_components(const Mesh& mesh, MeshCheck& result) {
     b.min = {std::min(b.min.x, fb.min.x), std::min(b.min.y, fb.min.y), std::min(b.min.z, fb.min.z)};
     b.max = {std::max(b.max.x, fb.max.x), std::max(b.max.y, fb.max.y), std::max(b.max.z, fb.max.z)};
   }
-  const std::vector<int> volume = component_volume_signs(mesh, components, faces_of);
+  const std::vector<int> volume = component_volumes(mesh, components).sign;
   if (!result.closed() || result.nonmanifold_edges > 0) {
     // Without closed components "inside" means nothing: fall back to the volume sign of
     // components that no other component's box contains.
