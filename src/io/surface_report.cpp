@@ -115,7 +115,8 @@ std::string format_surface_report(const SurfaceReport& r) {
   }
   if (r.cleanup) {
     const CleanupStats& c = *r.cleanup;
-    row("cleanup", std::to_string(c.collapses) + " edge collapses, " + std::to_string(c.flips) + " flips; area " +
+    row("cleanup", std::to_string(c.collapses) + " edge collapses, " + std::to_string(c.flips) + " flips, " +
+                       std::to_string(c.moves) + " vertex moves; area " +
                        (c.area_after >= c.area_before ? "+" : "") +
                        fixed(100 * (c.area_after - c.area_before) / c.area_before, 4) + " %");
     row("quality before", "min angle " + fixed(c.before.min_angle_deg, 3) + " deg; faces < 5 deg: " +
@@ -164,7 +165,7 @@ std::string surface_report_json(const SurfaceReport& r) {
   if (r.cleanup) {
     const CleanupStats& c = *r.cleanup;
     j.key("cleanup").begin_object();
-    j.field("collapses", c.collapses).field("flips", c.flips).field("area_before", c.area_before);
+    j.field("collapses", c.collapses).field("flips", c.flips).field("moves", c.moves).field("area_before", c.area_before);
     j.field("area_after", c.area_after).field("min_angle_deg_before", c.before.min_angle_deg);
     j.field("faces_below_5deg_before", c.before.below_5deg).field("faces_below_1deg_before", c.before.below_1deg);
     j.end_object();
