@@ -52,6 +52,7 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   arr.face_points.resize(ops.face_count());
   arr.face_segments.resize(ops.face_count());
   arr.transversal_segments.resize(ops.face_count());
+  arr.segment_planes.resize(ops.face_count());
   arr.coplanar_partners.resize(ops.face_count());
   std::vector<std::uint32_t> on_both, touch;
   auto place = [&](std::uint32_t face, const Location& loc, std::uint32_t id) {
@@ -70,10 +71,12 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
       place(pair.face_b, p.on_b, id);
     }
     auto add_segments = [&](std::uint32_t face, const auto& segments) {
+      const std::uint32_t other = face == pair.face_a ? pair.face_b : pair.face_a;
       for (const auto& [k1, k2] : segments) {
         const std::uint32_t i = point_id(k1), j = point_id(k2);
         if (i == j) continue;
         arr.face_segments[face].emplace_back(std::min(i, j), std::max(i, j));
+        if (!pair.coplanar) arr.segment_planes[face].push_back({{std::min(i, j), std::max(i, j)}, other});
         if (pair.transversal) arr.transversal_segments[face].emplace_back(std::min(i, j), std::max(i, j));
       }
     };
@@ -91,6 +94,7 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   for (std::uint32_t id : touch) arr.may_touch[id] = 1;
   for (auto& list : arr.edge_points) sort_unique(list);
   for (auto& list : arr.face_points) sort_unique(list);
+  for (auto& list : arr.segment_planes) std::sort(list.begin(), list.end());
   for (auto& list : arr.transversal_segments) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());

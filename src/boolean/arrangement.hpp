@@ -24,6 +24,9 @@ struct Arrangement {
   std::vector<std::vector<std::uint32_t>> edge_points;  // per combined edge: points strictly inside it
   std::vector<std::vector<std::uint32_t>> face_points;  // per combined face: points strictly inside it
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> face_segments;  // constraints
+  // For constraints from non-coplanar pairs: (segment, the other operand's face whose
+  // plane holds it), sorted. Segments of one face on one such plane are collinear.
+  std::vector<std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>>> segment_planes;
   // The constraints of each face that come from transversal crossings (a subset).
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> transversal_segments;
   struct Partner {

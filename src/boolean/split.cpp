@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "boolean/retriangulate.hpp"
+#include "geometry/predicates.hpp"
 
 namespace molsurf::boolean_engine {
 
@@ -27,6 +28,47 @@ void find_opposite_sides(FaceSplit& out, const std::vector<std::pair<std::uint32
       }
     }
     if (forward != ~0u && backward != ~0u) out.opposite_sides.emplace_back(forward, backward);
+  }
+}
+
+// Segments of face f that lie on one plane of the other operand (its faces there are
+// exactly coplanar, e.g. the two triangles of a flat quad) lie on one line, the plane's
+// crossing with f: all their points form one collinear set, whose zero orientations then
+// need no arithmetic (the interval filter can never certify a zero).
+void add_coplanar_lines(const Operands& ops, const Arrangement& arr, std::uint32_t f, std::size_t first_line,
+                        std::vector<std::vector<std::uint32_t>>& collinear_sets) {
+  const auto& planes = arr.segment_planes[f];
+  const auto& segments = arr.face_segments[f];
+  if (planes.size() < 2) return;
+  auto same_plane = [&](std::uint32_t g, std::uint32_t h) {
+    if (g == h) return true;
+    const auto &a = ops.face(g), &b = ops.face(h);
+    for (std::uint32_t v : b) {
+      if (v == a[0] || v == a[1] || v == a[2]) continue;  // on g's plane (and costly to prove)
+      if (geometry::orient3d(ops.vertex(a[0]), ops.vertex(a[1]), ops.vertex(a[2]), ops.vertex(v)) != 0) return false;
+    }
+    return true;
+  };
+  // Group the segments (by index) whose planes coincide.
+  std::vector<std::uint32_t> plane_of(segments.size(), ~0u);
+  for (std::size_t j = 0; j < segments.size(); ++j) {
+    const auto it = std::lower_bound(planes.begin(), planes.end(), std::pair{segments[j], std::uint32_t{0}});
+    if (it != planes.end() && it->first == segments[j]) plane_of[j] = it->second;
+  }
+  std::vector<std::uint8_t> grouped(segments.size(), 0);
+  for (std::size_t j = 0; j < segments.size(); ++j) {
+    if (plane_of[j] == ~0u || grouped[j]) continue;
+    std::vector<std::uint32_t> line;
+    for (std::size_t k = j + 1; k < segments.size(); ++k)
+      if (plane_of[k] != ~0u && !grouped[k] && same_plane(plane_of[j], plane_of[k])) {
+        grouped[k] = 1;
+        line.insert(line.end(), collinear_sets[first_line + k].begin(), collinear_sets[first_line + k].end());
+      }
+    if (line.empty()) continue;
+    line.insert(line.end(), collinear_sets[first_line + j].begin(), collinear_sets[first_line + j].end());
+    std::sort(line.begin(), line.end());
+    line.erase(std::unique(line.begin(), line.end()), line.end());
+    collinear_sets.push_back(std::move(line));
   }
 }
 
@@ -72,6 +114,7 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
   const std::size_t first_line = face.collinear_sets.size();
   const auto& segments = arr.face_segments[f];
   const auto pieces = split_segments_at_points(segments, points, face.collinear_sets);
+  add_coplanar_lines(ops, arr, f, first_line, face.collinear_sets);
   // Pieces of transversal segments: both ends on the line of one (segments do not overlap
   // along a line unless they lie on a face's edge, which transversal ones never do).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> transversal_pieces;
