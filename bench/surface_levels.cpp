@@ -35,19 +35,7 @@ int main(int argc, char** argv) {
     std::printf("| %zu | %zu | %zu | %zu | %zu | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", k, l.merges,
                 l.faces_in, l.active_faces, l.faces_out, l.split_faces, l.ray_casts, l.whole_reruns, l.steps.cull,
                 l.steps.intersect, l.steps.split, l.steps.classify, l.steps.stitch, l.seconds);
-    sum.merges += l.merges;
-    sum.faces_in += l.faces_in;
-    sum.active_faces += l.active_faces;
-    sum.faces_out += l.faces_out;
-    sum.split_faces += l.split_faces;
-    sum.ray_casts += l.ray_casts;
-    sum.whole_reruns += l.whole_reruns;
-    sum.steps.cull += l.steps.cull;
-    sum.steps.intersect += l.steps.intersect;
-    sum.steps.split += l.steps.split;
-    sum.steps.classify += l.steps.classify;
-    sum.steps.stitch += l.steps.stitch;
-    sum.seconds += l.seconds;
+    sum += l;
   }
   std::printf("| all | %zu | %zu | %zu | %zu | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", sum.merges,
               sum.faces_in, sum.active_faces, sum.faces_out, sum.split_faces, sum.ray_casts, sum.whole_reruns,

@@ -63,6 +63,10 @@ struct SurfaceLevel {
   std::size_t split_faces = 0, ray_casts = 0, whole_reruns = 0;
   BooleanTimings steps;
   double seconds = 0;  // wall
+
+  // The merge's counts and step times added in (one more merge); levels add up likewise.
+  SurfaceLevel& operator+=(const BooleanStats& merge);
+  SurfaceLevel& operator+=(const SurfaceLevel& other);
 };
 
 struct SurfaceResult {

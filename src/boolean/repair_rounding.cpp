@@ -323,21 +323,7 @@ class Repairer {
     return false;
   }
 
-  void compact() {
-    std::size_t out = 0;
-    for (std::size_t f = 0; f < m_.faces.size(); ++f) {
-      if (!alive_[f]) continue;
-      m_.faces[out] = m_.faces[f];
-      operand_[out] = operand_[f];
-      source_[out] = source_[f];
-      if (!m_.face_tags.empty()) m_.face_tags[out] = m_.face_tags[f];
-      ++out;
-    }
-    m_.faces.resize(out);
-    operand_.resize(out);
-    source_.resize(out);
-    if (!m_.face_tags.empty()) m_.face_tags.resize(out);
-  }
+  void compact() { keep_alive_faces(m_, alive_, operand_, source_); }
 
   Mesh& m_;
   std::vector<std::uint8_t>& operand_;

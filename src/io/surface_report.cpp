@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/json_writer.hpp"
 #include "mesh/component_volume.hpp"
+#include "mesh/topology.hpp"
 #include "molsurf/report.hpp"
 
 namespace molsurf {
@@ -34,27 +35,12 @@ std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
 Mesh outer_surface_only(const Mesh& mesh) {
   const Components parts = connected_components(mesh);
   const std::vector<int> sign = component_volumes(mesh, parts).sign;
-  Mesh out;
-  out.vertices = mesh.vertices;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    if (sign[parts.face_component[f]] <= 0) continue;
-    out.faces.push_back(mesh.faces[f]);
-    if (mesh.has_tags()) out.face_tags.push_back(mesh.face_tags[f]);
-  }
-  // Drop the vertices no face uses any more.
-  std::vector<Index> remap(out.vertices.size(), ~Index{0});
-  Mesh compact;
-  compact.face_tags = std::move(out.face_tags);
-  for (Triangle& t : out.faces)
-    for (Index& v : t) {
-      if (remap[v] == ~Index{0}) {
-        remap[v] = static_cast<Index>(compact.vertices.size());
-        compact.vertices.push_back(out.vertices[v]);
-      }
-      v = remap[v];
-    }
-  compact.faces = std::move(out.faces);
-  return compact;
+  Mesh out = mesh;
+  std::vector<std::uint8_t> outer(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) outer[f] = sign[parts.face_component[f]] > 0;
+  keep_alive_faces(out, outer);
+  drop_unused_vertices(out);
+  return out;
 }
 
 std::vector<double> area_per_atom(const Mesh& mesh, std::size_t atom_count) {

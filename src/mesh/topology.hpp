@@ -63,4 +63,38 @@ inline bool link_condition(const Mesh& m, std::span<const std::uint32_t> faces_o
   return common == opposite;
 }
 
+// Keeps the faces f with alive[f], in order, with their tags and the given per-face
+// arrays (each as long as the face list).
+template <class... PerFace>
+void keep_alive_faces(Mesh& m, const std::vector<std::uint8_t>& alive, PerFace&... per_face) {
+  const bool tagged = m.has_tags();
+  std::size_t out = 0;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (!alive[f]) continue;
+    m.faces[out] = m.faces[f];
+    if (tagged) m.face_tags[out] = m.face_tags[f];
+    ((per_face[out] = per_face[f]), ...);
+    ++out;
+  }
+  m.faces.resize(out);
+  if (tagged) m.face_tags.resize(out);
+  (per_face.resize(out), ...);
+}
+
+// Renumbers the vertices in order of first use by the faces; unused ones go.
+inline void drop_unused_vertices(Mesh& m) {
+  std::vector<Index> renumber(m.vertices.size(), ~Index{0});
+  std::vector<Vec3> used;
+  used.reserve(m.vertices.size());
+  for (Triangle& t : m.faces)
+    for (Index& v : t) {
+      if (renumber[v] == ~Index{0}) {
+        renumber[v] = static_cast<Index>(used.size());
+        used.push_back(m.vertices[v]);
+      }
+      v = renumber[v];
+    }
+  m.vertices = std::move(used);
+}
+
 }  // namespace molsurf

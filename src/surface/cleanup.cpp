@@ -524,26 +524,8 @@ class Cleaner {
   }
 
   void compact() {
-    std::size_t out = 0;
-    for (std::size_t f = 0; f < m_.faces.size(); ++f) {
-      if (!alive_[f]) continue;
-      m_.faces[out] = m_.faces[f];
-      if (m_.has_tags()) m_.face_tags[out] = m_.face_tags[f];
-      ++out;
-    }
-    m_.faces.resize(out);
-    if (m_.has_tags()) m_.face_tags.resize(out);
-    std::vector<Index> renumber(m_.vertices.size(), ~Index{0});
-    std::vector<Vec3> used;
-    for (Triangle& t : m_.faces)
-      for (Index& v : t) {
-        if (renumber[v] == ~Index{0}) {
-          renumber[v] = static_cast<Index>(used.size());
-          used.push_back(m_.vertices[v]);
-        }
-        v = renumber[v];
-      }
-    m_.vertices = std::move(used);
+    keep_alive_faces(m_, alive_);
+    drop_unused_vertices(m_);
   }
 
   Mesh& m_;

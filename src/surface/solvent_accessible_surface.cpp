@@ -63,6 +63,39 @@ class ThreadCountScope {
 
 }  // namespace
 
+SurfaceLevel& SurfaceLevel::operator+=(const BooleanStats& m) {
+  ++merges;
+  faces_in += m.faces_a + m.faces_b;
+  active_faces += m.active_faces;
+  faces_out += m.output_faces;
+  split_faces += m.split_faces;
+  ray_casts += m.ray_casts;
+  whole_reruns += m.whole_reruns;
+  steps.cull += m.seconds.cull;
+  steps.intersect += m.seconds.intersect;
+  steps.split += m.seconds.split;
+  steps.classify += m.seconds.classify;
+  steps.stitch += m.seconds.stitch;
+  return *this;
+}
+
+SurfaceLevel& SurfaceLevel::operator+=(const SurfaceLevel& o) {
+  merges += o.merges;
+  faces_in += o.faces_in;
+  active_faces += o.active_faces;
+  faces_out += o.faces_out;
+  split_faces += o.split_faces;
+  ray_casts += o.ray_casts;
+  whole_reruns += o.whole_reruns;
+  steps.cull += o.steps.cull;
+  steps.intersect += o.steps.intersect;
+  steps.split += o.steps.split;
+  steps.classify += o.steps.classify;
+  steps.stitch += o.steps.stitch;
+  seconds += o.seconds;
+  return *this;
+}
+
 SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SurfaceResult result;
@@ -114,21 +147,8 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     merges_done += pairs;
     ++result.levels;
     SurfaceLevel& stats = result.level_stats.emplace_back();
-    stats.merges = pairs;
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - level_start).count();
-    for (const BooleanStats& m : merge_stats) {
-      stats.faces_in += m.faces_a + m.faces_b;
-      stats.active_faces += m.active_faces;
-      stats.faces_out += m.output_faces;
-      stats.split_faces += m.split_faces;
-      stats.ray_casts += m.ray_casts;
-      stats.whole_reruns += m.whole_reruns;
-      stats.steps.cull += m.seconds.cull;
-      stats.steps.intersect += m.seconds.intersect;
-      stats.steps.split += m.seconds.split;
-      stats.steps.classify += m.seconds.classify;
-      stats.steps.stitch += m.seconds.stitch;
-    }
+    for (const BooleanStats& m : merge_stats) stats += m;
     if (options.progress) options.progress(merges_done, total_merges);
     level = std::move(next);
   }
