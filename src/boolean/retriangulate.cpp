@@ -150,7 +150,9 @@ class AdvancingFront {
     if (n_ <= kMemoPoints) memo_.assign(n_ * n_ * n_, kUnknown);
     for (int i = 0; i < n; ++i) {
       const ImplicitPoint& p = points.point(i);
-      approx_.push_back({p.coordinate(face.projection.u).mid(), p.coordinate(face.projection.v).mid()});
+      const auto &iu = p.coordinate(face.projection.u), &iv = p.coordinate(face.projection.v);
+      approx_.push_back({iu.mid(), iv.mid()});
+      box_.push_back({iu.lo, iu.hi, iv.lo, iv.hi});
     }
     lines_.assign(n, 0);
     for (std::size_t k = 0; k < face.collinear_sets.size() && k < 64; ++k)
@@ -250,6 +252,19 @@ class AdvancingFront {
     return ((cx - bx / 2) * -by + (cy - by / 2) * bx) / std::sqrt(b2);
   }
 
+  // Interval boxes that prove a point outside a closed triangle, or two segments apart
+  // (most candidates, without their exact orientations).
+  bool outside_box(int w, int p, int c, int q) const {
+    const auto &bw = box_[w], &bp = box_[p], &bc = box_[c], &bq = box_[q];
+    return bw[1] < std::min({bp[0], bc[0], bq[0]}) || bw[0] > std::max({bp[1], bc[1], bq[1]}) ||
+           bw[3] < std::min({bp[2], bc[2], bq[2]}) || bw[2] > std::max({bp[3], bc[3], bq[3]});
+  }
+  bool boxes_apart(int a, int b, int c, int d) const {
+    const auto &ba = box_[a], &bb = box_[b], &bc = box_[c], &bd = box_[d];
+    return std::max(ba[1], bb[1]) < std::min(bc[0], bd[0]) || std::max(bc[1], bd[1]) < std::min(ba[0], bb[0]) ||
+           std::max(ba[3], bb[3]) < std::min(bc[2], bd[2]) || std::max(bc[3], bd[3]) < std::min(ba[2], bb[2]);
+  }
+
   bool properly_crosses(int a, int b, int c, int d) const {
     const int o1 = orient(a, b, c), o2 = orient(a, b, d);
     if (o1 == 0 || o2 == 0 || o1 == o2) return false;
@@ -260,13 +275,13 @@ class AdvancingFront {
   bool valid_triangle(int a, int b, int p) const {
     const int n = static_cast<int>(points_.ids().size());
     for (int q = 0; q < n; ++q) {
-      if (q == a || q == b || q == p) continue;
+      if (q == a || q == b || q == p || outside_box(q, a, b, p)) continue;
       if (orient(a, b, q) >= 0 && orient(b, p, q) >= 0 && orient(p, a, q) >= 0) return false;
     }
     for (const FrontEdge& edge : front_) {
       const int c = edge.a, d = edge.b;
       for (auto [s, t] : {Edge{b, p}, Edge{p, a}}) {
-        if (c == s || c == t || d == s || d == t) continue;
+        if (c == s || c == t || d == s || d == t || boxes_apart(s, t, c, d)) continue;
         if (properly_crosses(s, t, c, d)) return false;
       }
     }
@@ -288,6 +303,7 @@ class AdvancingFront {
   const FaceToSplit& face_;
   const FacePoints& points_;
   std::vector<std::array<double, 2>> approx_;
+  std::vector<std::array<double, 4>> box_;  // u lo, u hi, v lo, v hi
   using Edge = std::pair<int, int>;
   static constexpr std::int8_t kUnknown = 2;
   static constexpr std::size_t kMemoPoints = 32;  // beyond: no memo (n^3 bytes)
@@ -489,6 +505,27 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
     }
     return worst;
   };
+  // Certainly outside the closed triangle pcq: its interval box misses the triangle's box
+  // (saves the exact orientations of nearly collinear points along a straight cut).
+  std::vector<std::array<double, 4>> box(n);  // u lo, u hi, v lo, v hi
+  for (int i = 0; i < n; ++i) {
+    const auto &iu = points.point(i).coordinate(face.projection.u), &iv = points.point(i).coordinate(face.projection.v);
+    box[i] = {iu.lo, iu.hi, iv.lo, iv.hi};
+  }
+  auto outside_box = [&](int w, int p, int c, int q) {
+    const auto &bw = box[w], &bp = box[p], &bc = box[c], &bq = box[q];
+    return bw[1] < std::min({bp[0], bc[0], bq[0]}) || bw[0] > std::max({bp[1], bc[1], bq[1]}) ||
+           bw[3] < std::min({bp[2], bc[2], bq[2]}) || bw[2] > std::max({bp[3], bc[3], bq[3]});
+  };
+  // Cosine of the remaining polygon's angle at `corner` (walked before -> corner ->
+  // after), or -1 when that angle is not convex. Quality only, but the convexity is
+  // decided exactly: it matters when the three points are nearly collinear.
+  auto remaining_angle_cosine = [&](int before, int corner, int after) {
+    const auto &b = at[before], &c = at[corner], &a = at[after];
+    if (orient(before, corner, after) <= 0) return -1.0;  // exact: near zero is the case that matters
+    const double ux = b[0] - c[0], uy = b[1] - c[1], wx = a[0] - c[0], wy = a[1] - c[1];
+    return (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+  };
   const auto& ids = points.ids();
   std::vector<std::array<std::uint32_t, 3>> triangles;
   for (std::vector<int>& poly : pieces) {
@@ -501,12 +538,20 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
         if (orient(p, c, q) <= 0) continue;
         bool empty = true;
         for (int w : poly)
-          if (w != p && w != c && w != q && orient(p, c, w) >= 0 && orient(c, q, w) >= 0 && orient(q, p, w) >= 0) {
+          if (w != p && w != c && w != q && !outside_box(w, p, c, q) && orient(p, c, w) >= 0 &&
+              orient(c, q, w) >= 0 && orient(q, p, w) >= 0) {
             empty = false;
             break;
           }
         if (!empty) continue;
-        const double cosine = smallest_angle_cosine(p, c, q);
+        // The ear's own angles, and the angles its diagonal leaves at p and q for the
+        // rest of the polygon: a diagonal along a nearly straight run of points leaves
+        // a sliver that no later triangle can avoid.
+        double cosine = smallest_angle_cosine(p, c, q);
+        if (k > 3) {
+          cosine = std::max(cosine, remaining_angle_cosine(poly[(i + k - 2) % k], p, q));
+          cosine = std::max(cosine, remaining_angle_cosine(p, q, poly[(i + 2) % k]));
+        }
         if (cosine < best_cosine) {
           best_cosine = cosine;
           best = i;

@@ -34,38 +34,56 @@ void find_opposite_sides(FaceSplit& out, const std::vector<std::pair<std::uint32
 // Segments of face f that lie on one plane of the other operand (its faces there are
 // exactly coplanar, e.g. the two triangles of a flat quad) lie on one line, the plane's
 // crossing with f: all their points form one collinear set, whose zero orientations then
-// need no arithmetic (the interval filter can never certify a zero).
+// need no arithmetic (the interval filter can never certify a zero). Only faces that
+// share an edge are compared (one orient3d each), and coplanarity is chained across
+// them: a flat region crossed along a line is a chain of neighbours. Nearly coplanar
+// neighbours (a rotated flat mesh) make that orient3d exact, so comparing every pair
+// would cost more than it saves.
 void add_coplanar_lines(const Operands& ops, const Arrangement& arr, std::uint32_t f, std::size_t first_line,
                         std::vector<std::vector<std::uint32_t>>& collinear_sets) {
   const auto& planes = arr.segment_planes[f];
   const auto& segments = arr.face_segments[f];
   if (planes.size() < 2) return;
-  auto same_plane = [&](std::uint32_t g, std::uint32_t h) {
+  // Faces g and h sharing an edge: coplanar iff h's third vertex is on g's plane.
+  auto coplanar_neighbours = [&](std::uint32_t g, std::uint32_t h) {
     if (g == h) return true;
     const auto &a = ops.face(g), &b = ops.face(h);
+    int shared = 0;
+    std::uint32_t other = ~0u;
     for (std::uint32_t v : b) {
-      if (v == a[0] || v == a[1] || v == a[2]) continue;  // on g's plane (and costly to prove)
-      if (geometry::orient3d(ops.vertex(a[0]), ops.vertex(a[1]), ops.vertex(a[2]), ops.vertex(v)) != 0) return false;
+      if (v == a[0] || v == a[1] || v == a[2])
+        ++shared;
+      else
+        other = v;
     }
-    return true;
+    if (shared != 2) return false;
+    return geometry::orient3d(ops.vertex(a[0]), ops.vertex(a[1]), ops.vertex(a[2]), ops.vertex(other)) == 0;
   };
-  // Group the segments (by index) whose planes coincide.
   std::vector<std::uint32_t> plane_of(segments.size(), ~0u);
   for (std::size_t j = 0; j < segments.size(); ++j) {
     const auto it = std::lower_bound(planes.begin(), planes.end(), std::pair{segments[j], std::uint32_t{0}});
     if (it != planes.end() && it->first == segments[j]) plane_of[j] = it->second;
   }
-  std::vector<std::uint8_t> grouped(segments.size(), 0);
+  std::vector<std::size_t> parent(segments.size());
+  for (std::size_t j = 0; j < parent.size(); ++j) parent[j] = j;
+  auto root = [&](std::size_t j) {
+    while (parent[j] != j) j = parent[j] = parent[parent[j]];
+    return j;
+  };
   for (std::size_t j = 0; j < segments.size(); ++j) {
-    if (plane_of[j] == ~0u || grouped[j]) continue;
-    std::vector<std::uint32_t> line;
+    if (plane_of[j] == ~0u) continue;
     for (std::size_t k = j + 1; k < segments.size(); ++k)
-      if (plane_of[k] != ~0u && !grouped[k] && same_plane(plane_of[j], plane_of[k])) {
-        grouped[k] = 1;
-        line.insert(line.end(), collinear_sets[first_line + k].begin(), collinear_sets[first_line + k].end());
-      }
-    if (line.empty()) continue;
-    line.insert(line.end(), collinear_sets[first_line + j].begin(), collinear_sets[first_line + j].end());
+      if (plane_of[k] != ~0u && root(j) != root(k) && coplanar_neighbours(plane_of[j], plane_of[k]))
+        parent[root(k)] = root(j);
+  }
+  std::vector<std::vector<std::size_t>> groups(segments.size());
+  for (std::size_t j = 0; j < segments.size(); ++j)
+    if (plane_of[j] != ~0u) groups[root(j)].push_back(j);
+  for (const auto& group : groups) {
+    if (group.size() < 2) continue;
+    std::vector<std::uint32_t> line;
+    for (std::size_t j : group)
+      line.insert(line.end(), collinear_sets[first_line + j].begin(), collinear_sets[first_line + j].end());
     std::sort(line.begin(), line.end());
     line.erase(std::unique(line.begin(), line.end()), line.end());
     collinear_sets.push_back(std::move(line));

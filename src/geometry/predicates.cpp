@@ -7,6 +7,7 @@
 #include <gmpxx.h>
 
 #include "geometry/exact_integers.hpp"
+#include "geometry/expansion.hpp"
 
 #include <cmath>
 #include <initializer_list>
@@ -27,6 +28,12 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
   // GMP cannot convert an infinity or NaN: refuse them here.
   if (!all_finite({ax, ay, bx, by, cx, cy})) return 0;
   const double values[] = {ax, ay, bx, by, cx, cy};
+  if (fits_expansion_range(values, 2)) {
+    const Expansion left = Expansion::difference_of(bx, ax) * Expansion::difference_of(cy, ay);
+    const Expansion right = Expansion::difference_of(by, ay) * Expansion::difference_of(cx, ax);
+    const Expansion det = left - right;
+    if (det.valid()) return det.sign();
+  }
   const int e = common_exponent(values);
   if (e == INT_MAX) return 0;
   const mpz_class iax = scaled_integer(ax, e), iay = scaled_integer(ay, e);
@@ -38,6 +45,10 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
 int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   if (!all_finite({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})) return 0;
   const double values[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+  if (fits_expansion_range(values, 3)) {
+    const Expansion det = det3(difference(b, a), difference(c, a), difference(d, a));
+    if (det.valid()) return det.sign();
+  }
   const int e = common_exponent(values);
   if (e == INT_MAX) return 0;
   const IntVec ia = scaled(a, e);
