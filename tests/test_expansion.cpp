@@ -5,6 +5,8 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include "random_doubles.hpp"
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -17,6 +19,8 @@ using molsurf::geometry::Expansion;
 using molsurf::geometry::fits_expansion_range;
 
 namespace {
+
+using molsurf::test::random_double;
 
 mpq_class value_of(const Expansion& e) {
   mpq_class sum = 0;
@@ -40,14 +44,6 @@ bool well_formed(const Expansion& e) {
   return true;
 }
 
-// Doubles with full mantissas over a spread of exponents.
-double random_double(std::mt19937_64& rng, int min_exponent, int max_exponent) {
-  std::uniform_real_distribution<double> mantissa(0.5, 1.0);
-  std::uniform_int_distribution<int> exponent(min_exponent, max_exponent);
-  std::bernoulli_distribution negative(0.5);
-  const double v = std::ldexp(mantissa(rng), exponent(rng));
-  return negative(rng) ? -v : v;
-}
 
 int reference_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   auto q = [](const Vec3& v) { return std::array<mpq_class, 3>{v.x, v.y, v.z}; };

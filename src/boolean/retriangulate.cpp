@@ -26,6 +26,8 @@ int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int axis)
   if (a.hi < b.lo) return -1;
   if (b.hi < a.lo) return 1;
   const int e = geometry::common_exponent_of({&p, &q});
+  const int s = geometry::compare_homogeneous(p.small_homogeneous(e), q.small_homogeneous(e), axis);
+  if (s != geometry::kSmallOverflow) return s;
   return geometry::compare_homogeneous(p.homogeneous(e), q.homogeneous(e), axis);
 }
 
@@ -45,7 +47,12 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
 }
 
 FacePoints::FacePoints(std::vector<std::uint32_t> ids, std::span<const ImplicitPoint> all, Projection projection)
-    : ids_(std::move(ids)), all_(all), projection_(projection), exact_(ids_.size()), exponent_(INT_MAX) {
+    : ids_(std::move(ids)),
+      all_(all),
+      projection_(projection),
+      small_(ids_.size()),
+      exact_(ids_.size()),
+      exponent_(INT_MAX) {
   local_.reserve(ids_.size());
   for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local_.emplace_back(ids_[i], i);
   std::sort(local_.begin(), local_.end());
@@ -57,13 +64,22 @@ int FacePoints::local(std::uint32_t id) const {
   return it->second;
 }
 
-const geometry::HomogeneousPoint& FacePoints::exact(int i) const {
+int FacePoints::exponent() const {
   if (exponent_ == INT_MAX) {
     int lowest = INT_MAX;
     for (std::uint32_t id : ids_) lowest = std::min(lowest, geometry::common_exponent(all_[id].defining_values()));
     exponent_ = lowest == INT_MAX ? 0 : lowest;
   }
-  if (!exact_[i]) exact_[i] = point(i).homogeneous(exponent_);
+  return exponent_;
+}
+
+const geometry::SmallHomogeneousPoint& FacePoints::small(int i) const {
+  if (!small_[i]) small_[i] = point(i).small_homogeneous(exponent());
+  return *small_[i];
+}
+
+const geometry::HomogeneousPoint& FacePoints::exact(int i) const {
+  if (!exact_[i]) exact_[i] = point(i).homogeneous(exponent());
   return *exact_[i];
 }
 
@@ -74,6 +90,8 @@ int FacePoints::orient(int a, int b, int c) const {
   const geometry::Interval filtered = (pb.coordinate(u) - pa.coordinate(u)) * (pc.coordinate(v) - pa.coordinate(v)) -
                                       (pb.coordinate(v) - pa.coordinate(v)) * (pc.coordinate(u) - pa.coordinate(u));
   if (const int s = filtered.certain_sign()) return s;
+  if (const int s = geometry::orient2d_homogeneous(small(a), small(b), small(c), u, v); s != geometry::kSmallOverflow)
+    return s;
   return geometry::orient2d_homogeneous(exact(a), exact(b), exact(c), u, v);
 }
 
@@ -81,6 +99,7 @@ int FacePoints::compare(int a, int b, int axis) const {
   const geometry::Interval &x = point(a).coordinate(axis), &y = point(b).coordinate(axis);
   if (x.hi < y.lo) return -1;
   if (y.hi < x.lo) return 1;
+  if (const int s = geometry::compare_homogeneous(small(a), small(b), axis); s != geometry::kSmallOverflow) return s;
   return geometry::compare_homogeneous(exact(a), exact(b), axis);
 }
 
@@ -528,43 +547,64 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   };
   const auto& ids = points.ids();
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  for (std::vector<int>& poly : pieces) {
-    while (poly.size() >= 3) {
-      const int k = static_cast<int>(poly.size());
+  // Each piece is a cyclic list; an ear's verdict and score depend only on its corner's
+  // two neighbours on each side, and clipping a vertex can only turn other corners into
+  // ears (one point fewer to contain), so a valid ear keeps its score until a neighbour
+  // within two steps is clipped. Corners that are no ears are re-examined every round.
+  enum : std::uint8_t { kStale, kEar, kNoEar };
+  for (const std::vector<int>& poly : pieces) {
+    const int k = static_cast<int>(poly.size());
+    std::vector<int> prev(k), next(k);
+    for (int i = 0; i < k; ++i) {
+      prev[i] = (i + k - 1) % k;
+      next[i] = (i + 1) % k;
+    }
+    std::vector<double> score(k, 2);
+    std::vector<std::uint8_t> state(k, kStale);
+    int head = 0, remaining = k;
+    auto examine = [&](int i) {
+      const int p = poly[prev[i]], c = poly[i], q = poly[next[i]];
+      if (orient(p, c, q) <= 0) return kNoEar;
+      for (int j = next[next[i]], step = 3; step < remaining; ++step, j = next[j]) {
+        const int w = poly[j];
+        if (w != p && w != c && w != q && !outside_box(w, p, c, q) && orient(p, c, w) >= 0 && orient(c, q, w) >= 0 &&
+            orient(q, p, w) >= 0)
+          return kNoEar;
+      }
+      // The ear's own angles, and the angles its diagonal leaves at p and q for the
+      // rest of the polygon: a diagonal along a nearly straight run of points leaves
+      // a sliver that no later triangle can avoid.
+      double cosine = smallest_angle_cosine(p, c, q);
+      if (remaining > 3) {
+        cosine = std::max(cosine, remaining_angle_cosine(poly[prev[prev[i]]], p, q));
+        cosine = std::max(cosine, remaining_angle_cosine(p, q, poly[next[next[i]]]));
+      }
+      score[i] = cosine;
+      return kEar;
+    };
+    while (remaining >= 3) {
       int best = -1;
       double best_cosine = 2;
-      for (int i = 0; i < k; ++i) {
-        const int p = poly[(i + k - 1) % k], c = poly[i], q = poly[(i + 1) % k];
-        if (orient(p, c, q) <= 0) continue;
-        bool empty = true;
-        for (int w : poly)
-          if (w != p && w != c && w != q && !outside_box(w, p, c, q) && orient(p, c, w) >= 0 &&
-              orient(c, q, w) >= 0 && orient(q, p, w) >= 0) {
-            empty = false;
-            break;
-          }
-        if (!empty) continue;
-        // The ear's own angles, and the angles its diagonal leaves at p and q for the
-        // rest of the polygon: a diagonal along a nearly straight run of points leaves
-        // a sliver that no later triangle can avoid.
-        double cosine = smallest_angle_cosine(p, c, q);
-        if (k > 3) {
-          cosine = std::max(cosine, remaining_angle_cosine(poly[(i + k - 2) % k], p, q));
-          cosine = std::max(cosine, remaining_angle_cosine(p, q, poly[(i + 2) % k]));
-        }
-        if (cosine < best_cosine) {
-          best_cosine = cosine;
+      for (int step = 0, i = head; step < remaining; ++step, i = next[i]) {
+        if (state[i] != kEar) state[i] = examine(i);
+        if (state[i] == kEar && score[i] < best_cosine) {
+          best_cosine = score[i];
           best = i;
         }
       }
       // No ear, or only a sliver: near-collinear points (a polyline that is almost
       // straight) are better served by the Delaunay choice of the advancing front.
       if (best < 0 || best_cosine > kSliverCosine) return std::nullopt;
-      triangles.push_back({ids[poly[(best + k - 1) % k]], ids[poly[best]], ids[poly[(best + 1) % k]]});
-      poly.erase(poly.begin() + best);
-      if (poly.size() == 2) break;
+      const int p = prev[best], q = next[best];
+      triangles.push_back({ids[poly[p]], ids[poly[best]], ids[poly[q]]});
+      next[p] = q;
+      prev[q] = p;
+      if (head == best) head = q;
+      --remaining;
+      state[p] = state[q] = state[prev[p]] = state[next[q]] = kStale;
+      if (remaining == 2) break;
     }
-    if (poly.size() != 2) return std::nullopt;
+    if (remaining != 2) return std::nullopt;
   }
   // A triangulation of the face with all its points: m + 2 (n - m) - 2 triangles.
   if (static_cast<int>(triangles.size()) != m + 2 * (n - m) - 2) return std::nullopt;

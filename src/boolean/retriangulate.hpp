@@ -37,8 +37,9 @@ struct FaceToSplit {
 };
 
 // The points of one face with exact predicates in its projection: the interval filter
-// first, then integer homogeneous coordinates at one exponent for the whole face, each
-// built once (points are shared by several predicates, and their exact form is costly).
+// first, then integer homogeneous coordinates at one exponent for the whole face (inline
+// fixed-size integers, GMP's mpz when those overflow), each built once (points are shared
+// by several predicates, and their exact form is costly).
 class FacePoints {
  public:
   FacePoints(std::vector<std::uint32_t> ids, std::span<const geometry::ImplicitPoint> all, Projection projection);
@@ -50,12 +51,15 @@ class FacePoints {
   int compare(int a, int b, int axis) const;   // exact order of one coordinate
 
  private:
+  int exponent() const;
+  const geometry::SmallHomogeneousPoint& small(int i) const;  // may have overflowed
   const geometry::HomogeneousPoint& exact(int i) const;
 
   std::vector<std::uint32_t> ids_;
   std::span<const geometry::ImplicitPoint> all_;
   Projection projection_;
   std::vector<std::pair<std::uint32_t, int>> local_;  // (id, local index), sorted
+  mutable std::vector<std::optional<geometry::SmallHomogeneousPoint>> small_;
   mutable std::vector<std::optional<geometry::HomogeneousPoint>> exact_;
   mutable int exponent_;
 };

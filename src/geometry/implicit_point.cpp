@@ -6,6 +6,8 @@
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <climits>
 
 namespace molsurf::geometry {
@@ -25,6 +27,36 @@ QVec to_rational(const Vec3& v) { return {mpq_class(v.x), mpq_class(v.y), mpq_cl
 QVec sub(const QVec& a, const QVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 mpq_class det3(const QVec& u, const QVec& v, const QVec& w) {
   return w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
+}
+
+int sign_of(const mpz_class& v) { return sgn(v); }
+int sign_of(const SmallInteger& v) { return v.sign(); }
+
+// Homogeneous integer coordinates (X, Y, Z, W), W > 0, of the crossing of line pq with
+// plane abc, for any integer type with + - * (`scale` turns a defining double into one):
+// P = (q dp - p dq) / (dp - dq), dp = det[b-a, c-a, p-a], dq = det[b-a, c-a, q-a].
+template <class Int, class Scale>
+std::array<Int, 4> line_plane_homogeneous(const std::array<Vec3, 5>& def, Scale scale) {
+  std::array<Int, 3> p, q, u, v, pa, qa, normal;
+  for (int i = 0; i < 3; ++i) {
+    const Int a = scale(def[2][i]);
+    p[i] = scale(def[0][i]);
+    q[i] = scale(def[1][i]);
+    u[i] = scale(def[3][i]) - a;
+    v[i] = scale(def[4][i]) - a;
+    pa[i] = p[i] - a;
+    qa[i] = q[i] - a;
+  }
+  for (int i = 0; i < 3; ++i) {  // normal = u x v
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    normal[i] = u[j] * v[k] - u[k] * v[j];
+  }
+  const Int dp = pa[0] * normal[0] + pa[1] * normal[1] + pa[2] * normal[2];
+  const Int dq = qa[0] * normal[0] + qa[1] * normal[1] + qa[2] * normal[2];
+  std::array<Int, 4> h{q[0] * dp - p[0] * dq, q[1] * dp - p[1] * dq, q[2] * dp - p[2] * dq, dp - dq};
+  if (sign_of(h[3]) < 0)
+    for (Int& x : h) x = -x;
+  return h;
 }
 
 }  // namespace
@@ -68,18 +100,16 @@ HomogeneousPoint ImplicitPoint::homogeneous(int exponent) const {
     const IntVec v = scaled(def_[0], exponent);
     return {v.x, v.y, v.z, 1};
   }
-  // P = (q dp - p dq) / (dp - dq), dp = det[b-a, c-a, p-a], dq = det[b-a, c-a, q-a].
-  const IntVec p = scaled(def_[0], exponent), q = scaled(def_[1], exponent), a = scaled(def_[2], exponent);
-  const IntVec u = scaled(def_[3], exponent) - a, v = scaled(def_[4], exponent) - a;
-  const mpz_class dp = det3(u, v, p - a), dq = det3(u, v, q - a);
-  HomogeneousPoint h{q.x * dp - p.x * dq, q.y * dp - p.y * dq, q.z * dp - p.z * dq, dp - dq};
-  if (sgn(h.w) < 0) {
-    h.x = -h.x;
-    h.y = -h.y;
-    h.z = -h.z;
-    h.w = -h.w;
-  }
-  return h;
+  auto h = line_plane_homogeneous<mpz_class>(def_, [&](double x) { return scaled_integer(x, exponent); });
+  return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
+}
+
+SmallHomogeneousPoint ImplicitPoint::small_homogeneous(int exponent) const {
+  if (!is_lpi_)
+    return {SmallInteger::scaled(def_[0].x, exponent), SmallInteger::scaled(def_[0].y, exponent),
+            SmallInteger::scaled(def_[0].z, exponent), SmallInteger::scaled(1.0, 0)};
+  auto h = line_plane_homogeneous<SmallInteger>(def_, [&](double x) { return SmallInteger::scaled(x, exponent); });
+  return {h[0], h[1], h[2], h[3]};
 }
 
 int common_exponent_of(std::initializer_list<const ImplicitPoint*> points) {
@@ -91,14 +121,37 @@ int common_exponent_of(std::initializer_list<const ImplicitPoint*> points) {
 int orient2d_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, const HomogeneousPoint& c, int u,
                          int v) {
   // det [[a_u, a_v, a_w], [b_u, b_v, b_w], [c_u, c_v, c_w]]: orient2d of the projected
-  // points when every w is positive.
-  const mpz_class det = a[u] * (b[v] * c.w - b.w * c[v]) - a[v] * (b[u] * c.w - b.w * c[u]) +
-                        a.w * (b[u] * c[v] - b[v] * c[u]);
+  // points when every w is positive. In place: no temporaries.
+  mpz_class minor, det;
+  mpz_mul(minor.get_mpz_t(), b[v].get_mpz_t(), c.w.get_mpz_t());
+  mpz_submul(minor.get_mpz_t(), b.w.get_mpz_t(), c[v].get_mpz_t());
+  mpz_mul(det.get_mpz_t(), a[u].get_mpz_t(), minor.get_mpz_t());
+  mpz_mul(minor.get_mpz_t(), b[u].get_mpz_t(), c.w.get_mpz_t());
+  mpz_submul(minor.get_mpz_t(), b.w.get_mpz_t(), c[u].get_mpz_t());
+  mpz_submul(det.get_mpz_t(), a[v].get_mpz_t(), minor.get_mpz_t());
+  mpz_mul(minor.get_mpz_t(), b[u].get_mpz_t(), c[v].get_mpz_t());
+  mpz_submul(minor.get_mpz_t(), b[v].get_mpz_t(), c[u].get_mpz_t());
+  mpz_addmul(det.get_mpz_t(), a.w.get_mpz_t(), minor.get_mpz_t());
   return sgn(det);
 }
 
+int orient2d_homogeneous(const SmallHomogeneousPoint& a, const SmallHomogeneousPoint& b,
+                         const SmallHomogeneousPoint& c, int u, int v) {
+  const SmallInteger det = a[u] * (b[v] * c.w - b.w * c[v]) - a[v] * (b[u] * c.w - b.w * c[u]) +
+                           a.w * (b[u] * c[v] - b[v] * c[u]);
+  return det.overflow() ? kSmallOverflow : det.sign();
+}
+
+int compare_homogeneous(const SmallHomogeneousPoint& a, const SmallHomogeneousPoint& b, int axis) {
+  const SmallInteger difference = a[axis] * b.w - b[axis] * a.w;
+  return difference.overflow() ? kSmallOverflow : difference.sign();
+}
+
 int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, int axis) {
-  return cmp(a[axis] * b.w, b[axis] * a.w);
+  mpz_class left, right;
+  mpz_mul(left.get_mpz_t(), a[axis].get_mpz_t(), b.w.get_mpz_t());
+  mpz_mul(right.get_mpz_t(), b[axis].get_mpz_t(), a.w.get_mpz_t());
+  return cmp(left, right);
 }
 
 Vec3 ImplicitPoint::rounded() const {
@@ -106,24 +159,34 @@ Vec3 ImplicitPoint::rounded() const {
   // X / W from the integer form, as a quotient of about 64 bits (one truncating integer
   // division per coordinate: far cheaper than a canonical rational).
   const int exponent = common_exponent(defining_values());
-  const HomogeneousPoint h = homogeneous(exponent);
-  const auto width_w = static_cast<long>(mpz_sizeinbase(h.w.get_mpz_t(), 2));
-  auto quotient = [&](const mpz_class& x) {
-    if (sgn(x) == 0) return 0.0;
-    const long shift = 64 - (static_cast<long>(mpz_sizeinbase(x.get_mpz_t(), 2)) - width_w);
+  const SmallHomogeneousPoint small = small_homogeneous(exponent);
+  std::optional<HomogeneousPoint> large;
+  std::array<mpz_t, 4> views;
+  std::array<mpz_srcptr, 4> h{};  // x, y, z, w
+  if (!small.overflow()) {
+    for (int i = 0; i < 3; ++i) h[i] = small[i].view(views[i]);
+    h[3] = small.w.view(views[3]);
+  } else {
+    large = homogeneous(exponent);
+    h = {large->x.get_mpz_t(), large->y.get_mpz_t(), large->z.get_mpz_t(), large->w.get_mpz_t()};
+  }
+  const auto width_w = static_cast<long>(mpz_sizeinbase(h[3], 2));
+  auto quotient = [&](mpz_srcptr x) {
+    if (mpz_sgn(x) == 0) return 0.0;
+    const long shift = 64 - (static_cast<long>(mpz_sizeinbase(x, 2)) - width_w);
     mpz_class q;
     if (shift >= 0) {
       mpz_class numerator;
-      mpz_mul_2exp(numerator.get_mpz_t(), x.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
-      mpz_tdiv_q(q.get_mpz_t(), numerator.get_mpz_t(), h.w.get_mpz_t());
+      mpz_mul_2exp(numerator.get_mpz_t(), x, static_cast<mp_bitcnt_t>(shift));
+      mpz_tdiv_q(q.get_mpz_t(), numerator.get_mpz_t(), h[3]);
     } else {
       mpz_class denominator;
-      mpz_mul_2exp(denominator.get_mpz_t(), h.w.get_mpz_t(), static_cast<mp_bitcnt_t>(-shift));
-      mpz_tdiv_q(q.get_mpz_t(), x.get_mpz_t(), denominator.get_mpz_t());
+      mpz_mul_2exp(denominator.get_mpz_t(), h[3], static_cast<mp_bitcnt_t>(-shift));
+      mpz_tdiv_q(q.get_mpz_t(), x, denominator.get_mpz_t());
     }
     return std::ldexp(q.get_d(), static_cast<int>(exponent - shift));
   };
-  return {quotient(h.x), quotient(h.y), quotient(h.z)};
+  return {quotient(h[0]), quotient(h[1]), quotient(h[2])};
 }
 
 int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, int u, int v) {
@@ -135,6 +198,8 @@ int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint
                             (b.coordinate(v) - a.coordinate(v)) * (c.coordinate(u) - a.coordinate(u));
   if (const int s = filtered.certain_sign()) return s;
   const int e = common_exponent_of({&a, &b, &c});
+  const int s = orient2d_homogeneous(a.small_homogeneous(e), b.small_homogeneous(e), c.small_homogeneous(e), u, v);
+  if (s != kSmallOverflow) return s;
   return orient2d_homogeneous(a.homogeneous(e), b.homogeneous(e), c.homogeneous(e), u, v);
 }
 
@@ -147,6 +212,18 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d
   // det[b-a, c-a, D/w - a] has the sign of det[b-a, c-a, D - a w] (w > 0).
   const double abc[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z};
   const int e = std::min(common_exponent(abc), common_exponent_of({&d}));
+  if (const SmallHomogeneousPoint h = d.small_homogeneous(e); !h.overflow()) {
+    std::array<SmallInteger, 3> za, u, v, shifted;
+    for (int i = 0; i < 3; ++i) {
+      za[i] = SmallInteger::scaled(a[i], e);
+      u[i] = SmallInteger::scaled(b[i], e) - za[i];
+      v[i] = SmallInteger::scaled(c[i], e) - za[i];
+      shifted[i] = h[i] - za[i] * h.w;
+    }
+    const SmallInteger det = shifted[0] * (u[1] * v[2] - u[2] * v[1]) + shifted[1] * (u[2] * v[0] - u[0] * v[2]) +
+                             shifted[2] * (u[0] * v[1] - u[1] * v[0]);
+    if (!det.overflow()) return det.sign();
+  }
   const HomogeneousPoint h = d.homogeneous(e);
   const IntVec za = scaled(a, e);
   const IntVec shifted{h.x - za.x * h.w, h.y - za.y * h.w, h.z - za.z * h.w};

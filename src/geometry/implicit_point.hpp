@@ -11,6 +11,7 @@
 #include <gmpxx.h>
 
 #include "geometry/interval.hpp"
+#include "geometry/small_integer.hpp"
 #include "molsurf/vec3.hpp"
 
 namespace molsurf::geometry {
@@ -20,6 +21,14 @@ namespace molsurf::geometry {
 struct HomogeneousPoint {
   mpz_class x, y, z, w;
   const mpz_class& operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+};
+
+// The same in inline fixed-size integers: the fast exact path. Falls back to the mpz form
+// when overflow() (defining doubles of very different magnitudes).
+struct SmallHomogeneousPoint {
+  SmallInteger x, y, z, w;
+  const SmallInteger& operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+  bool overflow() const { return x.overflow() || y.overflow() || z.overflow() || w.overflow(); }
 };
 
 struct ExactPoint {
@@ -44,6 +53,7 @@ class ImplicitPoint {
   // common exponent, and the homogeneous integer form scaled by 2^-exponent.
   std::span<const double> defining_values() const;
   HomogeneousPoint homogeneous(int exponent) const;
+  SmallHomogeneousPoint small_homogeneous(int exponent) const;
   // Within one ulp of the exact point in each coordinate (truncated toward zero);
   // the input itself for explicit points.
   Vec3 rounded() const;
@@ -61,6 +71,11 @@ int common_exponent_of(std::initializer_list<const ImplicitPoint*> points);
 int orient2d_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, const HomogeneousPoint& c, int u,
                          int v);
 int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, int axis);
+// The same on the small forms; kSmallOverflow when an intermediate value does not fit.
+inline constexpr int kSmallOverflow = 2;
+int orient2d_homogeneous(const SmallHomogeneousPoint& a, const SmallHomogeneousPoint& b,
+                         const SmallHomogeneousPoint& c, int u, int v);
+int compare_homogeneous(const SmallHomogeneousPoint& a, const SmallHomogeneousPoint& b, int axis);
 
 // orient2d of three points projected on the coordinate plane (u, v), u, v in {0,1,2}:
 // sign of (b-a)_u (c-a)_v - (b-a)_v (c-a)_u.

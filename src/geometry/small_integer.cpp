@@ -1,0 +1,127 @@
+#include "geometry/small_integer.hpp"
+
+#include <bit>
+#include <cmath>
+
+namespace molsurf::geometry {
+
+static_assert(GMP_NUMB_BITS == 64, "SmallInteger assumes 64-bit limbs without nails");
+
+namespace {
+__extension__ using Wide = unsigned __int128;  // GCC and Clang on 64-bit targets
+}  // namespace
+
+SmallInteger SmallInteger::scaled(double v, int exponent) {
+  SmallInteger r;
+  if (v == 0) return r;
+  // The double's own fields: no library calls (frexp and ldexp were most of the cost).
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased == 0x7ff) return overflowed();  // infinity or NaN
+  std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
+  int e = 0;  // v = mantissa * 2^e
+  if (biased == 0) {
+    e = -1074;  // subnormal
+  } else {
+    mantissa |= std::uint64_t{1} << 52;
+    e = biased - 1075;
+  }
+  int shift = e - exponent;
+  if (shift < 0) {  // fine if the bits shifted out are zero (1.0 at exponent 0, say)
+    if (shift < -63 || (mantissa & ((std::uint64_t{1} << -shift) - 1)) != 0) return overflowed();
+    mantissa >>= -shift;
+    shift = 0;
+  }
+  const int word = shift / 64, bit = shift % 64;
+  if (word + 2 > kLimbs) return overflowed();
+  for (int i = 0; i < word; ++i) r.limbs_[i] = 0;
+  r.limbs_[word] = static_cast<mp_limb_t>(mantissa << bit);
+  const auto high = bit == 0 ? std::uint64_t{0} : mantissa >> (64 - bit);
+  r.limbs_[word + 1] = static_cast<mp_limb_t>(high);
+  const int n = high != 0 ? word + 2 : word + 1;
+  r.size_ = v < 0 ? -n : n;
+  return r;
+}
+
+mpz_srcptr SmallInteger::view(mpz_t storage) const {
+  return mpz_roinit_n(storage, limbs_.data(), size_);
+}
+
+SmallInteger SmallInteger::add(const SmallInteger& a, const SmallInteger& b, bool subtract) {
+  if (a.overflow_ || b.overflow_) return overflowed();
+  const int sign_a = a.sign(), sign_b = subtract ? -b.sign() : b.sign();
+  if (sign_b == 0) return a;
+  if (sign_a == 0) {
+    SmallInteger r = b;
+    if (subtract) r.size_ = -r.size_;
+    return r;
+  }
+  const int na = a.length(), nb = b.length();
+  SmallInteger r;
+  if (sign_a == sign_b) {  // magnitudes add
+    const bool a_longer = na >= nb;
+    const SmallInteger& big = a_longer ? a : b;
+    const SmallInteger& small = a_longer ? b : a;
+    const int nbig = a_longer ? na : nb, nsmall = a_longer ? nb : na;
+    mp_limb_t carry = 0;
+    for (int i = 0; i < nbig; ++i) {
+      const Wide sum = static_cast<Wide>(big.limbs_[i]) + (i < nsmall ? small.limbs_[i] : 0) + carry;
+      r.limbs_[i] = static_cast<mp_limb_t>(sum);
+      carry = static_cast<mp_limb_t>(sum >> 64);
+    }
+    int n = nbig;
+    if (carry != 0) {
+      if (n == kLimbs) return overflowed();
+      r.limbs_[n++] = carry;
+    }
+    r.size_ = sign_a > 0 ? n : -n;
+    return r;
+  }
+  // Magnitudes subtract: the larger minus the smaller, with the larger's sign.
+  int order = na != nb ? (na > nb ? 1 : -1) : 0;
+  for (int i = na - 1; order == 0 && i >= 0; --i)
+    if (a.limbs_[i] != b.limbs_[i]) order = a.limbs_[i] > b.limbs_[i] ? 1 : -1;
+  if (order == 0) return r;
+  const SmallInteger& big = order > 0 ? a : b;
+  const SmallInteger& small = order > 0 ? b : a;
+  const int nbig = order > 0 ? na : nb, nsmall = order > 0 ? nb : na;
+  mp_limb_t borrow = 0;
+  for (int i = 0; i < nbig; ++i) {
+    const mp_limb_t subtrahend = i < nsmall ? small.limbs_[i] : 0;
+    const mp_limb_t x = big.limbs_[i];
+    const mp_limb_t difference = x - subtrahend - borrow;
+    borrow = (x < subtrahend || (x == subtrahend && borrow != 0)) ? 1 : 0;
+    r.limbs_[i] = difference;
+  }
+  int n = nbig;
+  while (n > 0 && r.limbs_[n - 1] == 0) --n;
+  const int sign = order > 0 ? sign_a : sign_b;
+  r.size_ = sign > 0 ? n : -n;
+  return r;
+}
+
+SmallInteger operator*(const SmallInteger& a, const SmallInteger& b) {
+  if (a.overflow_ || b.overflow_) return SmallInteger::overflowed();
+  SmallInteger r;
+  const int na = a.length(), nb = b.length();
+  if (na == 0 || nb == 0) return r;
+  if (na + nb > SmallInteger::kLimbs) return SmallInteger::overflowed();
+  // Schoolbook: the operands have a few limbs (a library call per product cost more).
+  for (int i = 0; i < na + nb; ++i) r.limbs_[i] = 0;
+  for (int i = 0; i < na; ++i) {
+    mp_limb_t carry = 0;
+    for (int j = 0; j < nb; ++j) {
+      const Wide t =
+          static_cast<Wide>(a.limbs_[i]) * b.limbs_[j] + r.limbs_[i + j] + carry;
+      r.limbs_[i + j] = static_cast<mp_limb_t>(t);
+      carry = static_cast<mp_limb_t>(t >> 64);
+    }
+    r.limbs_[i + nb] = carry;
+  }
+  int n = na + nb;
+  while (n > 0 && r.limbs_[n - 1] == 0) --n;
+  r.size_ = (a.size_ < 0) != (b.size_ < 0) ? -n : n;
+  return r;
+}
+
+}  // namespace molsurf::geometry
