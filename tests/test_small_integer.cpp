@@ -11,6 +11,7 @@
 
 #include "geometry/exact_integers.hpp"
 #include "geometry/implicit_point.hpp"
+#include "geometry/predicates.hpp"
 #include "geometry/small_integer.hpp"
 
 namespace molsurf::geometry {
@@ -111,6 +112,35 @@ TEST(SmallInteger, ImplicitPointPredicatesAgreeWithMpz) {
       }
   }
   EXPECT_GT(compared, 1000);
+}
+
+// rounded() now divides in SmallInteger: each coordinate must be the exact value
+// truncated toward zero to a double (no larger in magnitude, and the next double away
+// from zero already too large), at scales from 1e-6 to 1e6.
+TEST(SmallInteger, RoundedCoordinatesAreTruncations) {
+  std::mt19937_64 rng(41);
+  int checked = 0;
+  for (const double scale : {1e-6, 1e-2, 1.0, 37.0, 1e6}) {
+    std::uniform_real_distribution<double> coord(-scale, scale);
+    auto random_point = [&] { return Vec3{coord(rng), coord(rng), coord(rng)}; };
+    for (int trial = 0; trial < 300; ++trial) {
+      const Vec3 p = random_point(), q = random_point(), a = random_point(), b = random_point(), c = random_point();
+      const int sp = orient3d(a, b, c, p), sq = orient3d(a, b, c, q);
+      if (sp == 0 || sq == 0 || sp == sq) continue;
+      const ImplicitPoint point = ImplicitPoint::line_plane(p, q, a, b, c);
+      const Vec3 r = point.rounded();
+      const ExactPoint e = point.exact();
+      for (int axis = 0; axis < 3; ++axis) {
+        const mpq_class exact = e[axis], value(r[axis]);
+        ASSERT_LE(abs(value), abs(exact)) << "axis " << axis;
+        if (sgn(value) != 0) ASSERT_EQ(sgn(value), sgn(exact));
+        const double away = std::nextafter(std::fabs(r[axis]), INFINITY);
+        ASSERT_GT(mpq_class(away), abs(exact)) << "axis " << axis;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 500);
 }
 
 }  // namespace

@@ -29,6 +29,25 @@ mpq_class det3(const QVec& u, const QVec& v, const QVec& w) {
   return w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
 }
 
+// (x / w) * 2^exponent truncated toward zero to a double (w > 0), as SmallInteger's
+// truncated_quotient: about 64 quotient bits, then mpz_get_d's truncation to 53.
+double truncated_quotient(const mpz_class& x, const mpz_class& w, int exponent) {
+  if (sgn(x) == 0) return 0.0;
+  const long shift = 64 - (static_cast<long>(mpz_sizeinbase(x.get_mpz_t(), 2)) -
+                           static_cast<long>(mpz_sizeinbase(w.get_mpz_t(), 2)));
+  mpz_class q;
+  if (shift >= 0) {
+    mpz_class numerator;
+    mpz_mul_2exp(numerator.get_mpz_t(), x.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+    mpz_tdiv_q(q.get_mpz_t(), numerator.get_mpz_t(), w.get_mpz_t());
+  } else {
+    mpz_class denominator;
+    mpz_mul_2exp(denominator.get_mpz_t(), w.get_mpz_t(), static_cast<mp_bitcnt_t>(-shift));
+    mpz_tdiv_q(q.get_mpz_t(), x.get_mpz_t(), denominator.get_mpz_t());
+  }
+  return std::ldexp(q.get_d(), static_cast<int>(exponent - shift));
+}
+
 int sign_of(const mpz_class& v) { return sgn(v); }
 int sign_of(const SmallInteger& v) { return v.sign(); }
 
@@ -159,34 +178,14 @@ Vec3 ImplicitPoint::rounded() const {
   // X / W from the integer form, as a quotient of about 64 bits (one truncating integer
   // division per coordinate: far cheaper than a canonical rational).
   const int exponent = common_exponent(defining_values());
-  const SmallHomogeneousPoint small = small_homogeneous(exponent);
-  std::optional<HomogeneousPoint> large;
-  std::array<mpz_t, 4> views;
-  std::array<mpz_srcptr, 4> h{};  // x, y, z, w
-  if (!small.overflow()) {
-    for (int i = 0; i < 3; ++i) h[i] = small[i].view(views[i]);
-    h[3] = small.w.view(views[3]);
-  } else {
-    large = homogeneous(exponent);
-    h = {large->x.get_mpz_t(), large->y.get_mpz_t(), large->z.get_mpz_t(), large->w.get_mpz_t()};
+  if (const SmallHomogeneousPoint small = small_homogeneous(exponent); !small.overflow()) {
+    const auto x = truncated_quotient(small.x, small.w, exponent), y = truncated_quotient(small.y, small.w, exponent),
+               z = truncated_quotient(small.z, small.w, exponent);
+    if (x && y && z) return {*x, *y, *z};
   }
-  const auto width_w = static_cast<long>(mpz_sizeinbase(h[3], 2));
-  auto quotient = [&](mpz_srcptr x) {
-    if (mpz_sgn(x) == 0) return 0.0;
-    const long shift = 64 - (static_cast<long>(mpz_sizeinbase(x, 2)) - width_w);
-    mpz_class q;
-    if (shift >= 0) {
-      mpz_class numerator;
-      mpz_mul_2exp(numerator.get_mpz_t(), x, static_cast<mp_bitcnt_t>(shift));
-      mpz_tdiv_q(q.get_mpz_t(), numerator.get_mpz_t(), h[3]);
-    } else {
-      mpz_class denominator;
-      mpz_mul_2exp(denominator.get_mpz_t(), h[3], static_cast<mp_bitcnt_t>(-shift));
-      mpz_tdiv_q(q.get_mpz_t(), x, denominator.get_mpz_t());
-    }
-    return std::ldexp(q.get_d(), static_cast<int>(exponent - shift));
-  };
-  return {quotient(h[0]), quotient(h[1]), quotient(h[2])};
+  const HomogeneousPoint h = homogeneous(exponent);
+  return {truncated_quotient(h.x, h.w, exponent), truncated_quotient(h.y, h.w, exponent),
+          truncated_quotient(h.z, h.w, exponent)};
 }
 
 int orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, int u, int v) {

@@ -1,5 +1,6 @@
 #include "geometry/small_integer.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -132,6 +133,65 @@ SmallInteger operator*(const SmallInteger& a, const SmallInteger& b) {
   while (n > 0 && r.limbs_[n - 1] == 0) --n;
   r.size_ = (a.size_ < 0) != (b.size_ < 0) ? -n : n;
   return r;
+}
+
+namespace {
+
+int bit_length(const mp_limb_t* limbs, int n) { return (n - 1) * 64 + (64 - std::countl_zero(limbs[n - 1])); }
+
+// limbs << shift into out (n + shift / 64 + 1 limbs); returns the used length.
+int shifted_left(const mp_limb_t* limbs, int n, int shift, mp_limb_t* out) {
+  const int words = shift / 64, bits = shift % 64;
+  for (int i = 0; i < words; ++i) out[i] = 0;
+  out[words + n] = bits == 0 ? 0 : mpn_lshift(out + words, limbs, n, static_cast<unsigned>(bits));
+  if (bits == 0)
+    for (int i = 0; i < n; ++i) out[words + i] = limbs[i];
+  int length = words + n + 1;
+  while (length > 0 && out[length - 1] == 0) --length;
+  return length;
+}
+
+}  // namespace
+
+std::optional<double> truncated_quotient(const SmallInteger& x, const SmallInteger& w, int exponent) {
+  if (x.overflow_ || w.overflow_ || w.size_ <= 0) return std::nullopt;
+  if (x.size_ == 0) return 0.0;
+  const int nx = x.length(), nw = w.length();
+  // About 64 quotient bits: numerator and denominator aligned so that their bit lengths
+  // differ by 64 (as the mpz version does).
+  const int shift = 64 - (bit_length(x.limbs_.data(), nx) - bit_length(w.limbs_.data(), nw));
+  std::array<mp_limb_t, 2 * SmallInteger::kLimbs + 2> numerator, denominator, quotient, remainder;
+  int nn = nx, nd = nw;
+  const mp_limb_t* np = x.limbs_.data();
+  const mp_limb_t* dp = w.limbs_.data();
+  if (shift >= 0) {
+    if (nx + shift / 64 + 1 > static_cast<int>(numerator.size())) return std::nullopt;
+    nn = shifted_left(x.limbs_.data(), nx, shift, numerator.data());
+    np = numerator.data();
+  } else {
+    if (nw + -shift / 64 + 1 > static_cast<int>(denominator.size())) return std::nullopt;
+    nd = shifted_left(w.limbs_.data(), nw, -shift, denominator.data());
+    dp = denominator.data();
+  }
+  if (nn < nd) return std::nullopt;  // cannot happen: the quotient has about 64 bits
+  mpn_tdiv_qr(quotient.data(), remainder.data(), 0, np, nn, dp, nd);
+  int nq = nn - nd + 1;
+  while (nq > 0 && quotient[nq - 1] == 0) --nq;
+  if (nq == 0) return x.size_ < 0 ? -0.0 : 0.0;
+  // The leading 53 bits, truncated (what mpz_get_d does), then scaled back.
+  const int length = bit_length(quotient.data(), nq);
+  std::uint64_t top = 0;
+  int dropped = 0;
+  if (length <= 64) {
+    top = quotient[0];
+  } else {  // at most 2 limbs here
+    dropped = length - 64;
+    top = (quotient[1] << (64 - dropped)) | (quotient[0] >> dropped);
+  }
+  const int excess = std::max(0, static_cast<int>(std::bit_width(top)) - 53);
+  top >>= excess;
+  const double magnitude = std::ldexp(static_cast<double>(top), dropped + excess - shift + exponent);
+  return x.size_ < 0 ? -magnitude : magnitude;
 }
 
 }  // namespace molsurf::geometry

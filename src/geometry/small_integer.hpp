@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace molsurf::geometry {
 
@@ -38,6 +39,10 @@ class SmallInteger {
     return r;
   }
   friend int compare(const SmallInteger& a, const SmallInteger& b) { return (a - b).sign(); }
+  // (x / w) * 2^exponent, truncated toward zero to a double (w > 0): the quotient to 64
+  // bits by one long division, then its leading 53 bits (as mpz_tdiv_q and mpz_get_d
+  // would give). Empty when an operand has overflowed or w is not positive.
+  friend std::optional<double> truncated_quotient(const SmallInteger& x, const SmallInteger& w, int exponent);
 
   SmallInteger(const SmallInteger& other) : size_(other.size_), overflow_(other.overflow_) {
     copy_limbs(other);
