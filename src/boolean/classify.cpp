@@ -117,9 +117,12 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   // Members of each patch, patches in order of their lowest sub-face (deterministic).
   std::vector<std::uint32_t> root(n);
   for (std::uint32_t s = 0; s < n; ++s) root[s] = patches.find(s);
-  std::vector<std::uint32_t> members(n);
-  std::iota(members.begin(), members.end(), 0u);
-  std::stable_sort(members.begin(), members.end(), [&](std::uint32_t x, std::uint32_t y) { return root[x] < root[y]; });
+  // Sub-faces grouped by root, in increasing index within a group (a counting sort: the
+  // roots are sub-face indices).
+  std::vector<std::uint32_t> members(n), first_of_root(n + 1, 0);
+  for (std::uint32_t s = 0; s < n; ++s) ++first_of_root[root[s] + 1];
+  for (std::uint32_t r = 0; r < n; ++r) first_of_root[r + 1] += first_of_root[r];
+  for (std::uint32_t s = 0; s < n; ++s) members[first_of_root[root[s]]++] = s;
   std::vector<std::uint32_t> patch_begin;  // patch k: members[patch_begin[k] .. patch_begin[k + 1])
   std::vector<std::uint32_t> patch_of(n);
   for (std::uint32_t k = 0; k < n; ++k) {
