@@ -1,5 +1,7 @@
 #include "geometry/triangle_intersection.hpp"
 
+#include <algorithm>
+
 #include <array>
 
 #include "geometry/predicates.hpp"
@@ -138,7 +140,16 @@ TrianglePairRelation classify_shared_vertex(const Vec3& v, const Vec3& a, const 
 }
 
 TrianglePairRelation classify_disjoint_indices(const std::array<Vec3, 3>& t1, const std::array<Vec3, 3>& t2) {
-  // Cheap rejection first: one triangle strictly on one side of the other's plane.
+  // Cheapest rejection: closed boxes apart (comparisons of doubles, exact). Callers with a
+  // coarse spatial index (the cleanup's hash grid) hand over many such pairs.
+  for (int axis = 0; axis < 3; ++axis) {
+    const double lo1 = std::min({t1[0][axis], t1[1][axis], t1[2][axis]});
+    const double hi1 = std::max({t1[0][axis], t1[1][axis], t1[2][axis]});
+    const double lo2 = std::min({t2[0][axis], t2[1][axis], t2[2][axis]});
+    const double hi2 = std::max({t2[0][axis], t2[1][axis], t2[2][axis]});
+    if (hi1 < lo2 || hi2 < lo1) return TrianglePairRelation::apart;
+  }
+  // Then one triangle strictly on one side of the other's plane.
   std::array<int, 3> side_of_t2{}, side_of_t1{};
   for (int k = 0; k < 3; ++k) side_of_t2[k] = orient3d(t1[0], t1[1], t1[2], t2[k]);
   if (strictly_same_side(side_of_t2[0], side_of_t2[1]) && strictly_same_side(side_of_t2[1], side_of_t2[2]))
