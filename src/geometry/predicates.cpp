@@ -1,7 +1,8 @@
 // The exact fallback of the orientation predicates: reached only when the floating-point
 // filter in predicates.hpp cannot certify the sign (near-degenerate or exactly degenerate
-// inputs). Every finite double is an integer times a power of two, so scaled to one
-// common exponent the determinant is evaluated exactly in GMP integers.
+// inputs). First in double expansions, when the range guard allows; otherwise every finite
+// double is an integer times a power of two, so scaled to one common exponent the
+// determinant is evaluated exactly in GMP integers.
 #include "geometry/predicates.hpp"
 
 #include <gmpxx.h>

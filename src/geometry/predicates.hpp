@@ -6,8 +6,10 @@
 // with a static forward error bound on that evaluation (Shewchuk's "A" bounds, scaled
 // by the permanent: the same expression with every term replaced by its magnitude).
 // If the double result is farther from zero than the bound, its sign is the exact sign.
-// Otherwise the determinant is evaluated exactly with GMP rationals (every finite double
-// is an exact rational), out of line, so the hot path stays a dozen flops and a branch.
+// Otherwise the determinant is evaluated exactly, out of line (the hot path stays a dozen
+// flops and a branch): in double expansions when no part can underflow or overflow
+// (expansion.hpp), else in GMP integers (every finite double is an integer times a power
+// of two).
 //
 // Conventions (note: orient3d is the NEGATION of Shewchuk's orient3d):
 //   orient3d(a, b, c, d) = sign det[b-a, c-a, d-a] = sign dot(d-a, (b-a)x(c-a)).
