@@ -55,6 +55,35 @@ TEST(Boolean, OverlappingSpheres) {
   for (std::size_t f = 0; f < u.mesh.face_count(); ++f) EXPECT_EQ(u.mesh.face_tags[f], u.face_operand[f] + 1);
 }
 
+// Coordinates of wildly different magnitudes: every exact coordinate 0 of two crossing
+// icospheres becomes +-1e-200 (a shift far below any rounding). Exact predicates on
+// those points need integers of thousands of bits: the double expansions' range guard
+// and the inline integers' capacity both refuse them, and GMP must take over.
+TEST(Boolean, TinyCoordinatesTakeTheGmpPaths) {
+  auto with_tiny_zeros = [](Mesh m) {
+    int changed = 0;
+    for (Vec3& v : m.vertices)
+      for (int axis = 0; axis < 3; ++axis) {
+        double& c = axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+        if (c == 0) {
+          c = (changed++ % 2 == 0) ? 1e-200 : -1e-200;
+        }
+      }
+    EXPECT_GT(changed, 0);
+    return m;
+  };
+  const Mesh a = with_tiny_zeros(make_icosphere({0, 0, 0}, 1.0, {.frequency = 4}));
+  const Mesh b = with_tiny_zeros(make_icosphere({0, 0, 0}, 0.9, {.frequency = 3}));
+  // Shift b by a dyadic amount so that its exact zeros stay tiny but the spheres cross.
+  Mesh shifted = b;
+  for (Vec3& v : shifted.vertices) v.x += 0.5;
+  ASSERT_TRUE(valid(a));
+  ASSERT_TRUE(valid(shifted));
+  const Volumes v = run_all(a, shifted);
+  expect_volume_identities(v);
+  EXPECT_GT(v.inter, 0);
+}
+
 TEST(Boolean, DisjointSolids) {
   const Mesh a = make_icosphere({0, 0, 0}, 1.0, {.frequency = 3});
   const Mesh b = make_icosphere({5, 0, 0}, 1.0, {.frequency = 3});
