@@ -24,10 +24,13 @@ int main(int argc, char** argv) {
   }
   const molsurf::Structure structure = molsurf::read_structure(argv[1]);
   const molsurf::SurfaceResult result = molsurf::solvent_accessible_surface(structure.atoms, options);
-  std::printf("%s: %zu atoms, %zu faces, %d threads, union %.3f s\n\n", argv[1], structure.atoms.size(),
-              result.mesh.faces.size(), options.threads > 0 ? options.threads : omp_get_max_threads(),
-              result.seconds.union_levels);
-  std::printf("| level | merges | faces in | active | faces out | split faces | rays | reruns | cull s | intersect s | split s | classify s | stitch s | wall s |\n");
+  std::printf("%s: %zu atoms, %zu faces, %d threads, union %.3f s (levels 0-%zu in subtrees: %.3f s)\n\n", argv[1],
+              structure.atoms.size(), result.mesh.faces.size(),
+              options.threads > 0 ? options.threads : omp_get_max_threads(), result.seconds.union_levels,
+              result.subtree_height > 0 ? result.subtree_height - 1 : 0, result.seconds.subtrees);
+  // "merge s": wall time of a level merged level by level; below the subtree height, the
+  // summed durations of the level's merges (they ran inside subtrees, interleaved).
+  std::printf("| level | merges | faces in | active | faces out | split faces | rays | reruns | cull s | intersect s | split s | classify s | stitch s | merge s |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   molsurf::SurfaceLevel sum;
   for (std::size_t k = 0; k < result.level_stats.size(); ++k) {

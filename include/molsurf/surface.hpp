@@ -52,6 +52,7 @@ struct SurfaceOptions {
 
 struct SurfaceTimings {  // seconds
   double union_levels = 0;
+  double subtrees = 0;  // of union_levels: the subtrees below SurfaceResult::subtree_height
   double total = 0;
 };
 
@@ -62,7 +63,9 @@ struct SurfaceLevel {
   std::size_t faces_in = 0, active_faces = 0, faces_out = 0;
   std::size_t split_faces = 0, ray_casts = 0, whole_reruns = 0;
   BooleanTimings steps;
-  double seconds = 0;  // wall
+  // Wall time of the level; for the levels merged inside subtrees (below
+  // SurfaceResult::subtree_height), the summed durations of their merges instead.
+  double seconds = 0;
 
   // The merge's counts and step times added in (one more merge); levels add up likewise.
   SurfaceLevel& operator+=(const BooleanStats& merge);
@@ -73,6 +76,9 @@ struct SurfaceResult {
   Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
   std::size_t merges = 0, levels = 0;
   std::vector<SurfaceLevel> level_stats;  // bottom (sphere pairs) first
+  // Levels below this height were merged subtree by subtree (each depth first, one per
+  // thread); the ones above level by level.
+  std::size_t subtree_height = 0;
   SurfaceTimings seconds;
 };
 

@@ -96,6 +96,47 @@ SurfaceLevel& SurfaceLevel::operator+=(const SurfaceLevel& o) {
   return *this;
 }
 
+namespace {
+
+// The merge tree: node (h, k) covers leaves [k 2^h, (k + 1) 2^h) of the spatial order.
+// It is the union of its two children, or its left child alone when the right one would
+// be empty (an odd end of a level). The same tree whatever the evaluation order.
+class MergeTree {
+ public:
+  MergeTree(std::span<const Atom> atoms, const std::vector<std::uint32_t>& order, const SphereOptions& spheres)
+      : atoms_(atoms), order_(order), spheres_(spheres) {}
+
+  bool exists(std::size_t height, std::size_t k) const { return (k << height) < order_.size(); }
+
+  // Node (h, k) evaluated depth first; each merge's statistics go to `levels[its height - 1]`.
+  Mesh evaluate(std::size_t height, std::size_t k, std::vector<SurfaceLevel>& levels) const {
+    if (height == 0) {
+      const std::uint32_t atom = order_[k];
+      return atom_sphere(atoms_[atom], static_cast<std::int32_t>(atom), spheres_);
+    }
+    if (!exists(height - 1, 2 * k + 1)) return evaluate(height - 1, 2 * k, levels);
+    BooleanResult merged;
+    std::chrono::steady_clock::time_point start;
+    {
+      const Mesh left = evaluate(height - 1, 2 * k, levels);
+      const Mesh right = evaluate(height - 1, 2 * k + 1, levels);
+      start = std::chrono::steady_clock::now();
+      merged = boolean(left, right, BooleanOp::union_);
+    }
+    SurfaceLevel& level = levels[height - 1];
+    level += merged.stats;
+    level.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::move(merged.mesh);
+  }
+
+ private:
+  std::span<const Atom> atoms_;
+  const std::vector<std::uint32_t>& order_;
+  const SphereOptions& spheres_;
+};
+
+}  // namespace
+
 SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SurfaceResult result;
@@ -103,57 +144,74 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const ThreadCountScope thread_count(threads);
 
-  // Level 0: one (lazily built) sphere per atom, in spatial order.
   const std::vector<std::uint32_t> order = spatial_order(atoms);
-  std::vector<std::optional<Mesh>> level(order.size());
-  auto mesh_at = [&](std::size_t k) -> Mesh& {
-    if (!level[k]) {
-      const std::uint32_t atom = order[k];
-      level[k] = atom_sphere(atoms[atom], static_cast<std::int32_t>(atom), options.spheres);
-    }
-    return *level[k];
-  };
+  std::size_t height = 0;  // of the whole tree
+  while ((std::size_t{1} << height) < order.size()) ++height;
+  const MergeTree tree(atoms, order, options.spheres);
+  result.level_stats.resize(height);
   const std::size_t total_merges = order.size() - 1;
   std::size_t merges_done = 0;
-  while (level.size() > 1) {
+
+  // Bottom part: whole subtrees, one per thread at a time, each depth first. Only the
+  // meshes on the path being merged are alive (a level at a time held every sphere of
+  // the structure at once), and each subtree's spheres stay in one core's cache. The
+  // subtrees' height leaves at least 8 per thread to balance the load.
+  std::size_t subtree_height = 0;
+  while (subtree_height < height && (order.size() >> (subtree_height + 1)) >= 8 * static_cast<std::size_t>(threads))
+    ++subtree_height;
+  const std::size_t subtrees = ((order.size() - 1) >> subtree_height) + 1;
+  std::vector<std::optional<Mesh>> level(subtrees);
+  std::vector<std::vector<SurfaceLevel>> subtree_levels(subtrees, std::vector<SurfaceLevel>(height));
+  const auto bottom_start = std::chrono::steady_clock::now();
+  const auto subtree_count = static_cast<std::int64_t>(subtrees);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::int64_t k = 0; k < subtree_count; ++k) {
+    level[k] = tree.evaluate(subtree_height, static_cast<std::size_t>(k), subtree_levels[k]);
+    std::size_t merges = 0;
+    for (const SurfaceLevel& l : subtree_levels[k]) merges += l.merges;
+#pragma omp critical(surface_progress)
+    {
+      merges_done += merges;
+      if (options.progress) options.progress(merges_done, total_merges);
+    }
+  }
+  for (const auto& levels : subtree_levels)
+    for (std::size_t h = 0; h < height; ++h) result.level_stats[h] += levels[h];
+  result.seconds.subtrees = std::chrono::duration<double>(std::chrono::steady_clock::now() - bottom_start).count();
+  result.subtree_height = subtree_height;
+
+  // Top part: level by level. Many merges: one per thread. Few large ones: one at a
+  // time, each using all threads inside the engine. Either way the result is the same.
+  for (std::size_t h = subtree_height; level.size() > 1; ++h) {
     const std::size_t pairs = level.size() / 2;
     std::vector<std::optional<Mesh>> next((level.size() + 1) / 2);
     const auto pair_count = static_cast<std::int64_t>(pairs);
     std::vector<BooleanStats> merge_stats(pairs);
     const auto level_start = std::chrono::steady_clock::now();
-    // Many small merges: one per thread. Few large ones: one at a time, each using all
-    // threads inside the engine. Either way the result is the same.
+    auto merge = [&](std::int64_t k) {
+      BooleanResult merged = boolean(*level[2 * k], *level[2 * k + 1], BooleanOp::union_);
+      merge_stats[k] = merged.stats;
+      next[k] = std::move(merged.mesh);
+      level[2 * k].reset();
+      level[2 * k + 1].reset();
+    };
     if (pairs >= static_cast<std::size_t>(threads)) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-      for (std::int64_t k = 0; k < pair_count; ++k) {
-        Mesh& a = mesh_at(2 * k);
-        Mesh& b = mesh_at(2 * k + 1);
-        BooleanResult merged = boolean(a, b, BooleanOp::union_);
-        merge_stats[k] = merged.stats;
-        next[k] = std::move(merged.mesh);
-        level[2 * k].reset();
-        level[2 * k + 1].reset();
-      }
+      for (std::int64_t k = 0; k < pair_count; ++k) merge(k);
     } else {
-      for (std::int64_t k = 0; k < pair_count; ++k) {
-        BooleanResult merged = boolean(mesh_at(2 * k), mesh_at(2 * k + 1), BooleanOp::union_);
-        merge_stats[k] = merged.stats;
-        next[k] = std::move(merged.mesh);
-        level[2 * k].reset();
-        level[2 * k + 1].reset();
-      }
+      for (std::int64_t k = 0; k < pair_count; ++k) merge(k);
     }
-    if (level.size() % 2 == 1) next.back() = std::move(mesh_at(level.size() - 1));
+    if (level.size() % 2 == 1) next.back() = std::move(level.back());
     merges_done += pairs;
-    ++result.levels;
-    SurfaceLevel& stats = result.level_stats.emplace_back();
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - level_start).count();
+    SurfaceLevel& stats = result.level_stats[h];
     for (const BooleanStats& m : merge_stats) stats += m;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - level_start).count();
     if (options.progress) options.progress(merges_done, total_merges);
     level = std::move(next);
   }
-  result.mesh = std::move(mesh_at(0));
+  result.mesh = std::move(*level[0]);
   result.merges = total_merges;
+  result.levels = height;
   result.seconds.total = result.seconds.union_levels =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
