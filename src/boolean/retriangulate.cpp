@@ -50,8 +50,6 @@ FacePoints::FacePoints(std::vector<std::uint32_t> ids, std::span<const ImplicitP
     : ids_(std::move(ids)),
       all_(all),
       projection_(projection),
-      small_(ids_.size()),
-      exact_(ids_.size()),
       exponent_(INT_MAX) {
   local_.reserve(ids_.size());
   for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local_.emplace_back(ids_[i], i);
@@ -74,11 +72,13 @@ int FacePoints::exponent() const {
 }
 
 const geometry::SmallHomogeneousPoint& FacePoints::small(int i) const {
+  if (small_.empty()) small_.resize(ids_.size());  // most faces never need an exact form
   if (!small_[i]) small_[i] = point(i).small_homogeneous(exponent());
   return *small_[i];
 }
 
 const geometry::HomogeneousPoint& FacePoints::exact(int i) const {
+  if (exact_.empty()) exact_.resize(ids_.size());
   if (!exact_[i]) exact_[i] = point(i).homogeneous(exponent());
   return *exact_[i];
 }

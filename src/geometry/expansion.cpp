@@ -62,12 +62,6 @@ Expansion Expansion::product_of(double a, double b) {
   return e;
 }
 
-double Expansion::estimate() const {
-  double sum = 0;
-  for (int i = 0; i < size_; ++i) sum += parts_[i];
-  return sum;
-}
-
 Expansion Expansion::operator-() const {
   Expansion e = *this;
   for (int i = 0; i < size_; ++i) e.parts_[i] = -parts_[i];

@@ -46,8 +46,6 @@ class Expansion {
   bool valid() const { return valid_; }
   int size() const { return size_; }
   std::span<const double> parts() const { return {parts_.data(), static_cast<std::size_t>(size_)}; }
-  // The value to within about one ulp of its largest part (after compress()).
-  double estimate() const;
 
   Expansion operator-() const;
   Expansion scaled(double b) const;  // this * b

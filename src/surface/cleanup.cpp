@@ -346,6 +346,13 @@ class Cleaner {
     return better;
   }
 
+  // Face g becomes t; its present normal is the reference no new normal may turn far from.
+  void add_change(Edit& e, std::uint32_t g, const Triangle& t) const {
+    e.changed.push_back(g);
+    e.triangles.push_back(t);
+    e.reference.push_back(normal(m_.faces[g]));
+  }
+
   // Collapse of edge uv: v merges into u, which moves to `target`. The caller has checked
   // that the edge has two faces and the link condition.
   Edit collapse(Index u, Index v, const std::vector<std::uint32_t>& on_edge, const Vec3& target) const {
@@ -357,17 +364,11 @@ class Cleaner {
       Triangle t = m_.faces[g];
       for (Index& w : t)
         if (w == v) w = u;
-      e.changed.push_back(g);
-      e.triangles.push_back(t);
-      e.reference.push_back(normal(m_.faces[g]));
+      add_change(e, g, t);
     }
     if (!(target == m_.vertices[u])) {
-      for (std::uint32_t g : faces_of_[u]) {
-        if (g == on_edge[0] || g == on_edge[1]) continue;
-        e.changed.push_back(g);
-        e.triangles.push_back(m_.faces[g]);
-        e.reference.push_back(normal(m_.faces[g]));
-      }
+      for (std::uint32_t g : faces_of_[u])
+        if (g != on_edge[0] && g != on_edge[1]) add_change(e, g, m_.faces[g]);
       e.moved = u;
       e.target = target;
     }
@@ -411,11 +412,7 @@ class Cleaner {
   Edit move(Index v, const Vec3& target) const {
     Edit e;
     e.kind = Edit::Kind::move;
-    for (std::uint32_t g : faces_of_[v]) {
-      e.changed.push_back(g);
-      e.triangles.push_back(m_.faces[g]);
-      e.reference.push_back(normal(m_.faces[g]));
-    }
+    for (std::uint32_t g : faces_of_[v]) add_change(e, g, m_.faces[g]);
     e.moved = v;
     e.target = target;
     return e;

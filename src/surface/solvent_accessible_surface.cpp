@@ -64,19 +64,16 @@ class ThreadCountScope {
 }  // namespace
 
 SurfaceLevel& SurfaceLevel::operator+=(const BooleanStats& m) {
-  ++merges;
-  faces_in += m.faces_a + m.faces_b;
-  active_faces += m.active_faces;
-  faces_out += m.output_faces;
-  split_faces += m.split_faces;
-  ray_casts += m.ray_casts;
-  whole_reruns += m.whole_reruns;
-  steps.cull += m.seconds.cull;
-  steps.intersect += m.seconds.intersect;
-  steps.split += m.seconds.split;
-  steps.classify += m.seconds.classify;
-  steps.stitch += m.seconds.stitch;
-  return *this;
+  SurfaceLevel one;
+  one.merges = 1;
+  one.faces_in = m.faces_a + m.faces_b;
+  one.active_faces = m.active_faces;
+  one.faces_out = m.output_faces;
+  one.split_faces = m.split_faces;
+  one.ray_casts = m.ray_casts;
+  one.whole_reruns = m.whole_reruns;
+  one.steps = m.seconds;
+  return *this += one;
 }
 
 SurfaceLevel& SurfaceLevel::operator+=(const SurfaceLevel& o) {
