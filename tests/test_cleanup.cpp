@@ -96,8 +96,10 @@ std::pair<Index, Index> seam_edge_toward(const Mesh& m, const Vec3& direction) {
 // A sphere whose two halves have different tags (a seam along the equator, as where two
 // atoms' spheres meet), with typical slivers of a union: two needles across the seam, a
 // cap on the seam, and a cluster of four vertices much closer to each other than to the
-// rest, where no single edge collapse keeps the link condition.
-Mesh sphere_with_slivers() {
+// rest, where no single edge collapse keeps the link condition. At a cluster size of
+// 1e-8 every face of the cluster's neighbourhood is thinner than a thousandth of a degree,
+// and stays so after any one collapse: only the merge judged as a whole improves it.
+Mesh sphere_with_slivers(double cluster_size = 1e-4) {
   Mesh m = make_icosphere({}, 3, {.frequency = 8, .tag = 0});
   for (std::size_t f = 0; f < m.faces.size(); ++f) m.face_tags[f] = centroid(m, f).z > 0 ? 1 : 0;
   // Needles: the seam edge ab split 1e-4 of its length from a.
@@ -116,7 +118,8 @@ Mesh sphere_with_slivers() {
   const std::size_t g = face_toward(m, {0, 0.3, 1});
   const Vec3 centre = centroid(m, g);
   std::vector<Vec3> points{centre};
-  for (Index corner : m.faces[g]) points.push_back(centre + 1e-4 * normalized(m.vertices[corner] - centre));
+  for (Index corner : m.faces[g])
+    points.push_back(centre + cluster_size * normalized(m.vertices[corner] - centre));
   refine_face(m, g, points,
               {Triangle{3, 4, 5}, Triangle{3, 5, 6}, Triangle{3, 6, 4}, Triangle{0, 1, 5}, Triangle{0, 5, 4},
                Triangle{1, 2, 6}, Triangle{1, 6, 5}, Triangle{2, 0, 4}, Triangle{2, 4, 6}});
@@ -186,6 +189,18 @@ TEST(Cleanup, FixesNeedlesCapsAndClustersAcrossSeams) {
   EXPECT_TRUE(again.faces == m.faces);
   EXPECT_TRUE(again.vertices == m.vertices);
   EXPECT_TRUE(again.face_tags == m.face_tags);
+}
+
+TEST(Cleanup, MergesAClusterTooSmallForAnySingleCollapse) {
+  Mesh m = sphere_with_slivers(1e-8);
+  ASSERT_TRUE(check_mesh(m).valid());
+  ASSERT_LT(mesh_quality(m).min_angle_deg, 1e-3);
+  const double volume = signed_volume(m);
+  const CleanupStats s = improve_surface(m);
+  EXPECT_TRUE(check_mesh(m).valid());
+  EXPECT_EQ(s.after.below_1deg, 0u);
+  EXPECT_GE(s.after.min_angle_deg, 5);
+  EXPECT_LT(std::abs(signed_volume(m) - volume), 1e-4 * volume);
 }
 
 TEST(Cleanup, FixesACapInAPlaneWithoutLeavingIt) {

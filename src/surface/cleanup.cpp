@@ -175,7 +175,10 @@ class Cleaner {
       const Vec3 &a = pos(t[0]), &b = pos(t[1]), &c = pos(t[2]);
       if (geometry::collinear3d(a, b, c)) return false;
       const double angle = smallest_angle(a, b, c);
-      if (!(angle > kSmallestNewAngle)) return false;
+      // One step of a larger edit may leave a face that thin (in a cluster of vertices
+      // far closer than a thousandth of a degree's worth, every single collapse does);
+      // the edit as a whole may not.
+      if (must_improve && !(angle > kSmallestNewAngle)) return false;
       const Vec3 n = cross(b - a, c - a);
       const Vec3& r = e.reference[k];
       if (!(dot(n, r) > 0.5 * norm(n) * norm(r))) return false;
