@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "molsurf/atoms.hpp"
+#include "molsurf/boolean.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
@@ -201,6 +202,29 @@ TEST(Cleanup, MergesAClusterTooSmallForAnySingleCollapse) {
   EXPECT_EQ(s.after.below_1deg, 0u);
   EXPECT_GE(s.after.min_angle_deg, 5);
   EXPECT_LT(std::abs(signed_volume(m) - volume), 1e-4 * volume);
+}
+
+// A cube standing on a corner that pokes 1e-4 into a slab: their union has a neck whose
+// cross-section is a triangle some 2e-4 across, with needles all around it. Each edge of
+// that triangle has the third corner as a common neighbour of its ends, so no collapse
+// keeps the link condition; the neck has to widen.
+TEST(Cleanup, WidensANeckThatNoCollapseMayPinch) {
+  const Mesh cube = make_box({-1, -1, -1}, {0, 0, 0}, 4, 4, 4);  // corner (0, 0, 0) toward (1, 1, 1)
+  const double tilt = std::acos(1 / std::sqrt(3.0));  // (1, 1, 1) onto the z axis
+  Mesh standing = transformed(cube, {.axis = {1, -1, 0}, .angle = tilt, .translation = {0, 0, 1e-4}});
+  double top = -1e300;
+  for (const Vec3& v : standing.vertices) top = std::max(top, v.z);
+  if (top > 1e-3) standing = transformed(cube, {.axis = {1, -1, 0}, .angle = -tilt, .translation = {0, 0, 1e-4}});
+  const Mesh slab = make_box({-2, -2, 0}, {2, 2, 1}, 8, 8, 2);
+  Mesh m = boolean(standing, slab, BooleanOp::union_).mesh;
+  ASSERT_TRUE(check_mesh(m).valid());
+  ASSERT_GT(mesh_quality(m).below_1deg, 0u);
+  const double area = surface_area(m), volume = signed_volume(m);
+  const CleanupStats s = improve_surface(m);
+  EXPECT_TRUE(check_mesh(m).valid());
+  EXPECT_EQ(s.after.below_1deg, 0u);
+  EXPECT_LT(std::abs(surface_area(m) - area), 1e-3 * area);
+  EXPECT_LT(std::abs(signed_volume(m) - volume), 1e-3 * volume);
 }
 
 TEST(Cleanup, FixesACapInAPlaneWithoutLeavingIt) {

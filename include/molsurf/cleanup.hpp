@@ -25,12 +25,14 @@ struct CleanupStats {
 // Each pass takes the distorted faces, worst first, and makes the best valid change
 // around each: collapse of a short edge (to either end or to its midpoint), flip of an
 // edge, merge of a cluster of vertices much closer to each other than to the rest (edge
-// by edge), or, last, a move of one corner toward the centre of its neighbours in the
-// tangent plane (a seam vertex only along its seam). Every change must keep the mesh a
-// 2-manifold (link condition; a flip's new edge must not exist), must turn no face over
-// or make it degenerate (exact collinearity; no normal may turn by more than 60
-// degrees), must make the worst angle among the faces it touches better (a cluster
-// merge is judged as a whole), must keep the total area within max_area_change, and no
+// by edge), widening of a neck (a loop of three short edges that is not a face, where two
+// spheres barely overlap: it grows about its centre, corner by corner), or, last, a move
+// of one corner toward the centre of its neighbours in the tangent plane (a seam vertex
+// only along its seam). Every change must keep the mesh a 2-manifold (link condition; a
+// flip's new edge must not exist), must turn no face over or make it degenerate (exact
+// collinearity; no normal may turn by more than 60 degrees), must make the worst angle
+// among the faces it touches better (a cluster merge or a neck widening is judged as a
+// whole), must keep the total area within max_area_change, and no
 // face it changes may meet any other face beyond their shared corners (exact
 // triangle-pair test against a spatial hash). Seams (where faces of different tags, i.e.
 // different spheres, meet) stay where they are when that does as well: among changes

@@ -66,6 +66,8 @@ constexpr double kClusterFraction = 0.2;   // a cluster's edges: under this part
 constexpr std::size_t kMaxCluster = 8;
 constexpr double kSmallestNewAngle = 1e-3;  // degrees; no change makes a face thinner
 constexpr double kSmoothCos = 0.87;        // a vertex moves only if its faces are within 30 degrees of their sum
+constexpr double kNeckFraction = 0.5;  // a neck's loop: edges under this part of the sliver's longest
+constexpr double kNeckWidth = 0.5;     // it widens to this part of the edges leaving it
 
 // One local change of the mesh, described before it is made so that every check can be
 // run on it first. Faces keep their index (and tag); a collapse removes two.
@@ -349,6 +351,83 @@ class Cleaner {
     return better;
   }
 
+  // A sliver on a neck. Where two spheres barely overlap, the surface runs through a loop
+  // of three edges far shorter than the faces around it (a 3-cycle that is not a face),
+  // and the faces on the loop are needles that no collapse may shorten (each would pinch
+  // the neck: the link condition fails) and no flip may fix. The loop widens about its
+  // centre until its edges are half as long as the edges leaving it, one corner at a time
+  // under every validity check, and the whole is kept only if the worst angle among the
+  // faces it touched got better.
+  bool widen_neck(std::uint32_t f) {
+    const Triangle t = m_.faces[f];
+    double longest = 0;
+    for (int i = 0; i < 3; ++i) longest = std::max(longest, norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]));
+    const double short_edge = kNeckFraction * longest;
+    for (int i = 0; i < 3; ++i) {
+      const Index a = t[i], b = t[(i + 1) % 3];
+      if (!(norm(m_.vertices[b] - m_.vertices[a]) <= short_edge)) continue;
+      std::vector<Index> opposite;
+      for (std::uint32_t g : faces_on_edge(a, b))
+        for (Index w : m_.faces[g])
+          if (w != a && w != b) opposite.push_back(w);
+      const std::vector<Index> around_a = vertex_neighbours(m_, faces_of_[a], a);
+      const std::vector<Index> around_b = vertex_neighbours(m_, faces_of_[b], b);
+      for (Index w : around_a) {
+        if (std::find(opposite.begin(), opposite.end(), w) != opposite.end() ||
+            !std::binary_search(around_b.begin(), around_b.end(), w))
+          continue;
+        if (norm(m_.vertices[w] - m_.vertices[a]) <= short_edge && norm(m_.vertices[w] - m_.vertices[b]) <= short_edge &&
+            widen_loop({a, b, w}))
+          return true;
+      }
+    }
+    return false;
+  }
+
+  bool widen_loop(const std::array<Index, 3>& loop) {
+    Vec3 centre;
+    double size = 0, leaving = 0;
+    std::size_t leaving_count = 0;
+    for (int k = 0; k < 3; ++k) {
+      centre += m_.vertices[loop[k]] / 3.0;
+      size = std::max(size, norm(m_.vertices[loop[(k + 1) % 3]] - m_.vertices[loop[k]]));
+      for (Index w : vertex_neighbours(m_, faces_of_[loop[k]], loop[k]))
+        if (std::find(loop.begin(), loop.end(), w) == loop.end()) {
+          leaving += norm(m_.vertices[w] - m_.vertices[loop[k]]);
+          ++leaving_count;
+        }
+    }
+    if (leaving_count == 0 || !(size > 0)) return false;
+    const double full = kNeckWidth * leaving / static_cast<double>(leaving_count) / size;
+    // Less widening where the full width turns a face too far or meets another.
+    for (const double factor : {full, full / 3, full / 10}) {
+      if (!(factor > 1)) return false;
+      std::vector<Step> journal;
+      journal_ = &journal;
+      first_angle_.clear();
+      bool ok = true;
+      for (Index v : loop) {
+        Edit e = move(v, centre + factor * (m_.vertices[v] - centre));
+        if (!evaluate(e, false) || !crosses_nothing(e)) {
+          ok = false;
+          break;
+        }
+        commit(e);
+      }
+      double before = 180, after = 180;
+      for (const auto& [g, angle] : first_angle_) {
+        before = std::min(before, angle);
+        if (alive_[g]) after = std::min(after, min_angle(g));
+      }
+      const bool better = ok && after > before;
+      if (!better)
+        while (!journal.empty()) undo_last();
+      journal_ = nullptr;
+      if (better) return true;
+    }
+    return false;
+  }
+
   // Face g becomes t; its present normal is the reference no new normal may turn far from.
   void add_change(Edit& e, std::uint32_t g, const Triangle& t) const {
     e.changed.push_back(g);
@@ -499,6 +578,7 @@ class Cleaner {
     }
     if (try_best(options)) return true;
     if (merge_cluster(f)) return true;
+    if (widen_neck(f)) return true;
     options.clear();
     for (Index v : t) move_candidates(v, options);
     return try_best(options);
