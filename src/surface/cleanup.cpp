@@ -67,7 +67,8 @@ constexpr std::size_t kMaxCluster = 8;
 constexpr double kSmallestNewAngle = 1e-3;  // degrees; no change makes a face thinner
 constexpr double kSmoothCos = 0.87;        // a vertex moves only if its faces are within 30 degrees of their sum
 constexpr double kNeckFraction = 0.5;  // a neck's loop: edges under this part of the sliver's longest
-constexpr double kNeckWidth = 0.5;     // it widens to this part of the edges leaving it
+constexpr double kNeckWidth = 0.5;
+constexpr double kCapHeight = 0.02;    // a cap: its apex within this part of its base's length (about 1 degree)     // it widens to this part of the edges leaving it
 
 // One local change of the mesh, described before it is made so that every check can be
 // run on it first. Faces keep their index (and tag); a collapse removes two.
@@ -474,15 +475,20 @@ class Cleaner {
     for (std::uint32_t h : faces_of_[c])  // the new edge cd must not exist yet
       for (Index w : m_.faces[h])
         if (w == d) return e;
-    // Nearly coplanar faces only; across a seam (different tags) nearer still.
+    // Nearly coplanar faces only; across a seam (different tags) nearer still. A cap on
+    // the edge (c within a sliver's height of ab, between a and b) has no meaningful
+    // normal of its own: the new faces lie along g's plane and keep to g's normal.
     const bool same_tag = m_.tag(f) == m_.tag(g);
     const double min_cos = same_tag ? kSameTagFlipCos : kCrossTagFlipCos;
     const Vec3 old_f = normal(tf), old_g = normal(tg);
-    if (!(dot(old_f, old_g) > min_cos * norm(old_f) * norm(old_g))) return e;
+    const Vec3 ab = m_.vertices[b] - m_.vertices[a], ac = m_.vertices[c] - m_.vertices[a];
+    const double ab2 = dot(ab, ab), along = dot(ac, ab);
+    const bool cap = norm(old_f) < kCapHeight * ab2 && along > 0 && along < ab2;
+    if (!cap && !(dot(old_f, old_g) > min_cos * norm(old_f) * norm(old_g))) return e;
     int k = 0;
     while (tf[k] != c) ++k;
     const Index from = tf[(k + 1) % 3], to = tf[(k + 2) % 3];  // f runs from -> to along the edge
-    const Vec3 mean = old_f / std::max(norm(old_f), 1e-300) + old_g / std::max(norm(old_g), 1e-300);
+    const Vec3 mean = cap ? old_g : old_f / std::max(norm(old_f), 1e-300) + old_g / std::max(norm(old_g), 1e-300);
     e.changed = {f, g};
     e.triangles = {Triangle{from, d, c}, Triangle{d, to, c}};
     e.reference = {mean, mean};
