@@ -49,14 +49,23 @@ class FaceGrid {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
 };
 
+// The angle opposite the shortest edge (the smallest, by the law of sines): one atan2
+// instead of three, on the hottest path of the cleanup.
 double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3* p[3] = {&a, &b, &c};
-  double smallest = 180;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 u = *p[(i + 1) % 3] - *p[i], w = *p[(i + 2) % 3] - *p[i];
-    smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)) * 180 / std::numbers::pi);
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
+  Vec3 u, w;  // the two edges leaving the corner opposite the shortest edge
+  if (lab <= lbc && lab <= lca) {
+    u = a - c;
+    w = b - c;
+  } else if (lbc <= lca) {
+    u = b - a;
+    w = c - a;
+  } else {
+    u = c - b;
+    w = a - b;
   }
-  return smallest;
+  return std::atan2(norm(cross(u, w)), dot(u, w)) * 180 / std::numbers::pi;
 }
 
 constexpr Index kNoVertex = ~Index{0};
