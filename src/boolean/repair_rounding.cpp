@@ -168,7 +168,7 @@ class Repairer {
   }
 
   geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
-    return geometry::classify_triangle_pair(m_, a, b, probe_);
+    return geometry::classify_triangle_pair(m_, a, b);
   }
 
   // Crossing a face that shares a corner with f; for a sliver (smallest angle under 0.1
@@ -331,7 +331,6 @@ class Repairer {
   const std::vector<std::uint8_t>& frozen_;
   std::size_t refused_ = 0;
   std::vector<std::uint8_t> alive_;
-  mutable Mesh probe_;
   std::vector<std::uint32_t> indexed_;
   std::uint32_t first_added_ = static_cast<std::uint32_t>(m_.faces.size());
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_faces_;

@@ -202,8 +202,10 @@ bool is_degenerate_face(const Mesh& mesh, std::size_t face) {
 }
 
 TrianglePairRelation classify_triangle_pair(const Mesh& mesh, std::size_t face_i, std::size_t face_j) {
-  const Triangle& ti = mesh.faces[face_i];
-  const Triangle& tj = mesh.faces[face_j];
+  return classify_triangle_pair(mesh, mesh.faces[face_i], mesh.faces[face_j]);
+}
+
+TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& ti, const Triangle& tj) {
   // position_in_j[k]: where corner k of face i occurs in face j, or -1.
   std::array<int, 3> position_in_j{-1, -1, -1};
   int shared = 0;
@@ -231,25 +233,6 @@ TrianglePairRelation classify_triangle_pair(const Mesh& mesh, std::size_t face_i
     }
     default: return TrianglePairRelation::duplicate;
   }
-}
-
-TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& a, const Triangle& b, Mesh& scratch) {
-  // Copy the (up to six) corners, keeping shared indices shared: they say what the two
-  // triangles may have in common.
-  scratch.vertices.clear();
-  std::array<Index, 6> ids{};
-  auto local = [&](Index global) {
-    for (Index i = 0; i < scratch.vertices.size(); ++i)
-      if (ids[i] == global) return i;
-    ids[scratch.vertices.size()] = global;
-    scratch.vertices.push_back(mesh.vertices[global]);
-    return static_cast<Index>(scratch.vertices.size() - 1);
-  };
-  Triangle la{}, lb{};
-  for (int i = 0; i < 3; ++i) la[i] = local(a[i]);
-  for (int i = 0; i < 3; ++i) lb[i] = local(b[i]);
-  scratch.faces.assign({la, lb});
-  return classify_triangle_pair(scratch, 0, 1);
 }
 
 }  // namespace molsurf::geometry

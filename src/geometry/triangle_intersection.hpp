@@ -75,7 +75,7 @@ enum class TrianglePairRelation {
 TrianglePairRelation classify_triangle_pair(const Mesh& mesh, std::size_t face_i, std::size_t face_j);
 
 // The same for two triangles given by vertex indices into `mesh` (they need not be faces
-// of it: edits test their new faces before committing). `scratch` is reused storage.
-TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& a, const Triangle& b, Mesh& scratch);
+// of it: edits test their new faces before committing).
+TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& a, const Triangle& b);
 
 }  // namespace molsurf::geometry

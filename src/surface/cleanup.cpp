@@ -227,14 +227,14 @@ class Cleaner {
       std::sort(candidates_.begin(), candidates_.end());
       candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
       for (std::uint32_t g : candidates_)
-        if (!acceptable(geometry::classify_triangle_pair(m_, t, m_.faces[g], probe_))) {
+        if (!acceptable(geometry::classify_triangle_pair(m_, t, m_.faces[g]))) {
           ok = false;
           break;
         }
     }
     for (std::size_t i = 0; ok && i < e.triangles.size(); ++i)
       for (std::size_t j = i + 1; ok && j < e.triangles.size(); ++j)
-        ok = acceptable(geometry::classify_triangle_pair(m_, e.triangles[i], e.triangles[j], probe_));
+        ok = acceptable(geometry::classify_triangle_pair(m_, e.triangles[i], e.triangles[j]));
     if (e.moved != kNoVertex) m_.vertices[e.moved] = saved;
     return ok;
   }
@@ -628,7 +628,6 @@ class Cleaner {
   std::vector<std::uint8_t> alive_;
   std::vector<std::vector<std::uint32_t>> faces_of_;
   std::unique_ptr<FaceGrid> grid_;
-  Mesh probe_;
   std::vector<std::uint32_t> skip_, candidates_;
   double area_budget_ = 0, area_drift_ = 0;
   std::size_t collapses_ = 0, flips_ = 0, moves_ = 0;
