@@ -73,6 +73,9 @@ struct Quality {
   std::size_t below_5deg = 0;
   std::size_t faces = 0;
 };
+// The smallest angle of triangle abc in degrees: the one opposite its shortest edge (law
+// of sines), from atan2 of |u x w| and u.w, accurate for tiny and near-straight angles.
+double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
 double min_angle_deg(const Mesh& mesh, std::size_t face);
 double aspect_ratio(const Mesh& mesh, std::size_t face);
 Quality mesh_quality(const Mesh& mesh);

@@ -147,17 +147,26 @@ long euler_characteristic(const Mesh& mesh) {
          static_cast<long>(mesh.faces.size());
 }
 
+double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
+  Vec3 u, w;  // the two edges leaving the corner opposite the shortest edge
+  if (lab <= lbc && lab <= lca) {
+    u = a - c;
+    w = b - c;
+  } else if (lbc <= lca) {
+    u = b - a;
+    w = c - a;
+  } else {
+    u = c - b;
+    w = a - b;
+  }
+  return std::min(180.0, std::atan2(norm(cross(u, w)), dot(u, w)) * 180.0 / std::numbers::pi);
+}
+
 double min_angle_deg(const Mesh& mesh, std::size_t face) {
   const Triangle& t = mesh.faces[face];
-  double smallest = 180;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& p = mesh.vertices[t[i]];
-    const Vec3 u = mesh.vertices[t[(i + 1) % 3]] - p;
-    const Vec3 w = mesh.vertices[t[(i + 2) % 3]] - p;
-    // atan2 of |u x w| and u.w stays accurate for tiny and near-straight angles.
-    smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)));
-  }
-  return std::min(180.0, smallest * 180.0 / std::numbers::pi);
+  return smallest_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
 }
 
 double aspect_ratio(const Mesh& mesh, std::size_t face) {

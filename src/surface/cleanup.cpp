@@ -49,25 +49,6 @@ class FaceGrid {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
 };
 
-// The angle opposite the shortest edge (the smallest, by the law of sines): one atan2
-// instead of three, on the hottest path of the cleanup.
-double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, bc = c - b, ca = a - c;
-  const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
-  Vec3 u, w;  // the two edges leaving the corner opposite the shortest edge
-  if (lab <= lbc && lab <= lca) {
-    u = a - c;
-    w = b - c;
-  } else if (lbc <= lca) {
-    u = b - a;
-    w = c - a;
-  } else {
-    u = c - b;
-    w = a - b;
-  }
-  return std::atan2(norm(cross(u, w)), dot(u, w)) * 180 / std::numbers::pi;
-}
-
 constexpr Index kNoVertex = ~Index{0};
 constexpr double kSameTagFlipCos = 0.9;    // faces within 26 degrees of each other
 constexpr double kCrossTagFlipCos = 0.94;  // within 20 degrees
@@ -140,7 +121,7 @@ class Cleaner {
  private:
   double min_angle(std::uint32_t f) const {
     const Triangle& t = m_.faces[f];
-    return smallest_angle(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
+    return smallest_angle_deg(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
   }
   Vec3 normal(const Triangle& t) const {
     const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
@@ -186,7 +167,7 @@ class Cleaner {
       const Triangle& t = e.triangles[k];
       const Vec3 &a = pos(t[0]), &b = pos(t[1]), &c = pos(t[2]);
       if (geometry::collinear3d(a, b, c)) return false;
-      const double angle = smallest_angle(a, b, c);
+      const double angle = smallest_angle_deg(a, b, c);
       // One step of a larger edit may leave a face that thin (in a cluster of vertices
       // far closer than a thousandth of a degree's worth, every single collapse does);
       // the edit as a whole may not.
