@@ -57,8 +57,8 @@ constexpr std::size_t kMaxCluster = 8;
 constexpr double kSmallestNewAngle = 1e-3;  // degrees; no change makes a face thinner
 constexpr double kSmoothCos = 0.87;        // a vertex moves only if its faces are within 30 degrees of their sum
 constexpr double kNeckFraction = 0.5;  // a neck's loop: edges under this part of the sliver's longest
-constexpr double kNeckWidth = 0.5;
-constexpr double kCapHeight = 0.02;    // a cap: its apex within this part of its base's length (about 1 degree)     // it widens to this part of the edges leaving it
+constexpr double kNeckWidth = 0.5;     // it widens to this part of the edges leaving it
+constexpr double kCapHeight = 0.02;    // a cap: its apex within this part of its base's length (about 1 degree)
 
 // One local change of the mesh, described before it is made so that every check can be
 // run on it first. Faces keep their index (and tag); a collapse removes two.
