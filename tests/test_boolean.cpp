@@ -188,5 +188,21 @@ TEST(Boolean, RoundingFoldAtANearTripleJunction) {
   EXPECT_TRUE(valid(boolean(a, b, BooleanOp::union_).mesh));
 }
 
+TEST(Boolean, AnEngineErrorInAParallelStepIsAnExceptionNotAnAbort) {
+  // Two convex cells from an experiment that clipped spheres with rounded plane cuts; b
+  // intersects itself, so no Boolean is defined (the CLI refuses it), and the advancing
+  // front gave up on it inside split's parallel loop. That used to call std::terminate;
+  // the library must report it as an exception (or cope), never abort.
+  const std::string dir = std::string(MOLSURF_DATA_DIR) + "/../tests/data/boolean/";
+  const Mesh a = read_mesh(dir + "clipped_cells_a.ply"), b = read_mesh(dir + "clipped_cells_b.ply");
+  ASSERT_TRUE(valid(a));
+  ASSERT_FALSE(valid(b));
+  try {
+    boolean(a, b, BooleanOp::union_);
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()), "");
+  }
+}
+
 }  // namespace
 }  // namespace molsurf

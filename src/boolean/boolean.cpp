@@ -13,6 +13,7 @@
 #include "boolean/outer_envelope.hpp"
 #include "boolean/split.hpp"
 #include "boolean/stitch.hpp"
+#include "common/parallel_exceptions.hpp"
 
 namespace molsurf {
 
@@ -59,9 +60,11 @@ SplitArrangement cull_intersect_split(const Operands& operands, BooleanStats& st
 
   std::vector<PairIntersection> pairs(candidates.size());
   const auto pair_count = static_cast<std::int64_t>(candidates.size());
+  ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 256) if (pair_count > 2048)
   for (std::int64_t k = 0; k < pair_count; ++k)
-    pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second);
+    errors.run(k, [&] { pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second); });
+  errors.rethrow();
   std::erase_if(pairs, [](const PairIntersection& p) { return p.empty(); });
   stats.intersecting_pairs = pairs.size();
   stats.coplanar_pairs = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/parallel_exceptions.hpp"
 #include "geometry/face_bvh.hpp"
 
 namespace molsurf::boolean_engine {
@@ -41,10 +42,14 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> cull_face_pairs(const Opera
   constexpr std::int64_t kChunk = 1024;
   const std::int64_t chunks = (face_count_a + kChunk - 1) / kChunk;
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> per_chunk(chunks);
+  ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t c = 0; c < chunks; ++c)
-    for (std::int64_t f = c * kChunk; f < std::min(face_count_a, (c + 1) * kChunk); ++f)
-      candidates_of(static_cast<std::uint32_t>(f), per_chunk[c]);
+    errors.run(c, [&] {
+      for (std::int64_t f = c * kChunk; f < std::min(face_count_a, (c + 1) * kChunk); ++f)
+        candidates_of(static_cast<std::uint32_t>(f), per_chunk[c]);
+    });
+  errors.rethrow();
   for (const auto& list : per_chunk) pairs.insert(pairs.end(), list.begin(), list.end());
   return pairs;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "boolean/retriangulate.hpp"
+#include "common/parallel_exceptions.hpp"
 #include "geometry/predicates.hpp"
 
 namespace molsurf::boolean_engine {
@@ -169,8 +170,10 @@ SplitResult split_faces(const Operands& ops, const Arrangement& arr) {
     if (arr.face_is_cut(ops, f)) cut.push_back(f);
   std::vector<FaceSplit> pieces(cut.size());
   const auto cut_count = static_cast<std::int64_t>(cut.size());
+  ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 16) if (cut_count > 128)
-  for (std::int64_t k = 0; k < cut_count; ++k) pieces[k] = split_one_face(ops, arr, cut[k]);
+  for (std::int64_t k = 0; k < cut_count; ++k) errors.run(k, [&] { pieces[k] = split_one_face(ops, arr, cut[k]); });
+  errors.rethrow();
 
   SplitResult result;
   result.split_faces = cut.size();

@@ -8,6 +8,7 @@
 
 #include "molsurf/boolean.hpp"
 #include "molsurf/surface.hpp"
+#include "common/parallel_exceptions.hpp"
 
 namespace molsurf {
 
@@ -161,17 +162,20 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   std::vector<std::vector<SurfaceLevel>> subtree_levels(subtrees, std::vector<SurfaceLevel>(height));
   const auto bottom_start = std::chrono::steady_clock::now();
   const auto subtree_count = static_cast<std::int64_t>(subtrees);
+  ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::int64_t k = 0; k < subtree_count; ++k) {
-    level[k] = tree.evaluate(subtree_height, static_cast<std::size_t>(k), subtree_levels[k]);
-    std::size_t merges = 0;
-    for (const SurfaceLevel& l : subtree_levels[k]) merges += l.merges;
+  for (std::int64_t k = 0; k < subtree_count; ++k)
+    errors.run(k, [&] {
+      level[k] = tree.evaluate(subtree_height, static_cast<std::size_t>(k), subtree_levels[k]);
+      std::size_t merges = 0;
+      for (const SurfaceLevel& l : subtree_levels[k]) merges += l.merges;
 #pragma omp critical(surface_progress)
-    {
-      merges_done += merges;
-      if (options.progress) options.progress(merges_done, total_merges);
-    }
-  }
+      {
+        merges_done += merges;
+        if (options.progress) options.progress(merges_done, total_merges);
+      }
+    });
+  errors.rethrow();
   for (const auto& levels : subtree_levels)
     for (std::size_t h = 0; h < height; ++h) result.level_stats[h] += levels[h];
   result.seconds.subtrees = std::chrono::duration<double>(std::chrono::steady_clock::now() - bottom_start).count();
@@ -194,7 +198,8 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     };
     if (pairs >= static_cast<std::size_t>(threads)) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-      for (std::int64_t k = 0; k < pair_count; ++k) merge(k);
+      for (std::int64_t k = 0; k < pair_count; ++k) errors.run(k, [&] { merge(k); });
+      errors.rethrow();
     } else {
       for (std::int64_t k = 0; k < pair_count; ++k) merge(k);
     }
