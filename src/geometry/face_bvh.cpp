@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "common/parallel_exceptions.hpp"
+
 namespace molsurf::geometry {
 
 namespace {
@@ -134,22 +136,25 @@ void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t
 std::vector<std::pair<std::uint32_t, std::uint32_t>> BoxBvh::overlapping_pairs() const {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   const auto n = static_cast<std::int64_t>(items_.size());
+  ParallelExceptions errors;
 #pragma omp parallel
   {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> local;
 #pragma omp for schedule(dynamic, 1024) nowait
-    for (std::int64_t k = 0; k < n; ++k) {
-      const std::uint32_t i = items_[k];
-      BoundingBox query;
-      query.min = {item_bounds_.min_x[k], item_bounds_.min_y[k], item_bounds_.min_z[k]};
-      query.max = {item_bounds_.max_x[k], item_bounds_.max_y[k], item_bounds_.max_z[k]};
-      for_each_overlap(query, [&](std::uint32_t j) {
-        if (i < j) local.emplace_back(i, j);
+    for (std::int64_t k = 0; k < n; ++k)
+      errors.run(k, [&] {
+        const std::uint32_t i = items_[k];
+        BoundingBox query;
+        query.min = {item_bounds_.min_x[k], item_bounds_.min_y[k], item_bounds_.min_z[k]};
+        query.max = {item_bounds_.max_x[k], item_bounds_.max_y[k], item_bounds_.max_z[k]};
+        for_each_overlap(query, [&](std::uint32_t j) {
+          if (i < j) local.emplace_back(i, j);
+        });
       });
-    }
 #pragma omp critical(molsurf_bvh_pairs)
-    pairs.insert(pairs.end(), local.begin(), local.end());
+    errors.run(n, [&] { pairs.insert(pairs.end(), local.begin(), local.end()); });
   }
+  errors.rethrow();
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }

@@ -36,6 +36,7 @@
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "molsurf/error.hpp"
+#include "common/parallel_exceptions.hpp"
 #include "mesh/component_volume.hpp"
 
 namespace molsurf {
@@ -180,6 +181,7 @@ void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topologic
   std::size_t nonmanifold = 0;
   LowestIndices examples(max_examples);
   const auto nv_signed = static_cast<std::int64_t>(nv);
+  ParallelExceptions errors;
 #pragma omp parallel reduction(+ : nonmanifold)
   {
     LowestIndices local_examples(max_examples);
@@ -191,41 +193,43 @@ void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topologic
       return x;
     };
 #pragma omp for schedule(static)
-    for (std::int64_t v = 0; v < nv_signed; ++v) {
-      if (start[v + 1] - start[v] < 2) continue;  // zero or one face: a single fan
-      nodes.clear();
-      link_edges.clear();
-      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
-        const Triangle& t = mesh.faces[incident[k]];
-        const int corner = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
-        const Index w0 = t[(corner + 1) % 3], w1 = t[(corner + 2) % 3];
-        link_edges.push_back({w0, w1});
-        nodes.push_back(w0);
-        nodes.push_back(w1);
-      }
-      std::sort(nodes.begin(), nodes.end());
-      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      parent.resize(nodes.size());
-      std::iota(parent.begin(), parent.end(), 0u);
-      auto node_of = [&](Index w) {
-        return static_cast<std::uint32_t>(std::lower_bound(nodes.begin(), nodes.end(), w) - nodes.begin());
-      };
-      std::size_t fans = nodes.size();
-      for (const auto& e : link_edges) {
-        const std::uint32_t a = find(node_of(e[0])), b = find(node_of(e[1]));
-        if (a != b) {
-          parent[a] = b;
-          --fans;
+    for (std::int64_t v = 0; v < nv_signed; ++v)
+      errors.run(v, [&] {
+        if (start[v + 1] - start[v] < 2) return;  // zero or one face: a single fan
+        nodes.clear();
+        link_edges.clear();
+        for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
+          const Triangle& t = mesh.faces[incident[k]];
+          const int corner = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+          const Index w0 = t[(corner + 1) % 3], w1 = t[(corner + 2) % 3];
+          link_edges.push_back({w0, w1});
+          nodes.push_back(w0);
+          nodes.push_back(w1);
         }
-      }
-      if (fans > 1) {
-        ++nonmanifold;
-        local_examples.add(static_cast<std::size_t>(v));
-      }
-    }
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+        parent.resize(nodes.size());
+        std::iota(parent.begin(), parent.end(), 0u);
+        auto node_of = [&](Index w) {
+          return static_cast<std::uint32_t>(std::lower_bound(nodes.begin(), nodes.end(), w) - nodes.begin());
+        };
+        std::size_t fans = nodes.size();
+        for (const auto& e : link_edges) {
+          const std::uint32_t a = find(node_of(e[0])), b = find(node_of(e[1]));
+          if (a != b) {
+            parent[a] = b;
+            --fans;
+          }
+        }
+        if (fans > 1) {
+          ++nonmanifold;
+          local_examples.add(static_cast<std::size_t>(v));
+        }
+      });
 #pragma omp critical(molsurf_check_vertices)
     examples.merge(local_examples);
   }
+  errors.rethrow();
   result.nonmanifold_vertices = nonmanifold;
   result.examples_nonmanifold_vertex = examples.sorted();
 }
@@ -255,38 +259,41 @@ void check_self_intersections(const Mesh& mesh, const std::vector<std::uint8_t>&
   std::size_t intersecting = 0, contacts = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
   const auto nf = static_cast<std::int64_t>(mesh.faces.size());
+  ParallelExceptions errors;
 #pragma omp parallel reduction(+ : intersecting, contacts)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
 #pragma omp for schedule(dynamic, 4096)
-    for (std::int64_t i = 0; i < nf; ++i) {
-      if (!testable[i]) continue;
-      const auto face_i = static_cast<std::size_t>(i);
-      bvh.for_each_overlap(geometry::face_box(mesh, face_i), [&](std::uint32_t j) {
-        if (j <= face_i) return;  // each unordered pair once
-        switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
-          case geometry::TrianglePairRelation::intersecting:
-            ++intersecting;
-            local_intersecting.add(face_i);
-            local_intersecting.add(j);
-            break;
-          case geometry::TrianglePairRelation::contact:
-            ++contacts;
-            local_contact.add(face_i);
-            local_contact.add(j);
-            break;
-          case geometry::TrianglePairRelation::apart:
-          case geometry::TrianglePairRelation::duplicate:  // counted by count_duplicate_faces
-            break;
-        }
+    for (std::int64_t i = 0; i < nf; ++i)
+      errors.run(i, [&] {
+        if (!testable[i]) return;
+        const auto face_i = static_cast<std::size_t>(i);
+        bvh.for_each_overlap(geometry::face_box(mesh, face_i), [&](std::uint32_t j) {
+          if (j <= face_i) return;  // each unordered pair once
+          switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
+            case geometry::TrianglePairRelation::intersecting:
+              ++intersecting;
+              local_intersecting.add(face_i);
+              local_intersecting.add(j);
+              break;
+            case geometry::TrianglePairRelation::contact:
+              ++contacts;
+              local_contact.add(face_i);
+              local_contact.add(j);
+              break;
+            case geometry::TrianglePairRelation::apart:
+            case geometry::TrianglePairRelation::duplicate:  // counted by count_duplicate_faces
+              break;
+          }
+        });
       });
-    }
 #pragma omp critical(molsurf_check_intersections)
     {
       intersecting_examples.merge(local_intersecting);
       contact_examples.merge(local_contact);
     }
   }
+  errors.rethrow();
   result.intersecting_pairs = intersecting;
   result.contact_pairs = contacts;
   result.examples_intersecting = intersecting_examples.sorted();
