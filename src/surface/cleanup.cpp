@@ -330,14 +330,20 @@ class Cleaner {
         break;
       }
     }
+    return keep_if_better(!journal.empty());
+  }
+
+  // Ends the compound edit journaled in *journal_: kept when `complete` and the worst
+  // angle among the faces it touched got better, else undone step by step.
+  bool keep_if_better(bool complete) {
     double before = 180, after = 180;
     for (const auto& [g, angle] : first_angle_) {
       before = std::min(before, angle);
       if (alive_[g]) after = std::min(after, min_angle(g));
     }
-    const bool better = !journal.empty() && after > before;
+    const bool better = complete && after > before;
     if (!better)
-      while (!journal.empty()) undo_last();
+      while (!journal_->empty()) undo_last();
     journal_ = nullptr;
     return better;
   }
@@ -405,16 +411,7 @@ class Cleaner {
         }
         commit(e);
       }
-      double before = 180, after = 180;
-      for (const auto& [g, angle] : first_angle_) {
-        before = std::min(before, angle);
-        if (alive_[g]) after = std::min(after, min_angle(g));
-      }
-      const bool better = ok && after > before;
-      if (!better)
-        while (!journal.empty()) undo_last();
-      journal_ = nullptr;
-      if (better) return true;
+      if (keep_if_better(ok)) return true;
     }
     return false;
   }
