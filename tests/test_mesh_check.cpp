@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -313,21 +312,6 @@ TEST(MeshCheck, ManyIcospheres) {
   const MeshCheck o = check_mesh(overlapping);
   EXPECT_GT(o.intersecting_pairs, 0u);
   EXPECT_FALSE(o.valid());
-}
-
-// Timing of a ~2-million-face mesh; run with --gtest_also_run_disabled_tests.
-TEST(MeshCheck, DISABLED_TwoMillionFacesTiming) {
-  molsurf::IcosphereOptions options;
-  options.frequency = 50;  // 50,000 faces per sphere
-  Mesh m;
-  for (int i = 0; i < 40; ++i)
-    m.append(molsurf::make_icosphere({2.5 * (i % 7), 2.5 * (i / 7), 0.3 * i}, 1.0, options));
-  const auto start = std::chrono::steady_clock::now();
-  const MeshCheck c = check_mesh(m);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("check_mesh: %zu faces in %.2f s\n", c.faces, seconds);
-  EXPECT_EQ(c.faces, 2000000u);
-  EXPECT_TRUE(c.valid());
 }
 
 // Nesting is decided by exact ray parity, not by bounding boxes: a sphere in the duct of a
