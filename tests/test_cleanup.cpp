@@ -227,6 +227,35 @@ TEST(Cleanup, WidensANeckThatNoCollapseMayPinch) {
   EXPECT_LT(std::abs(signed_volume(m) - volume), 1e-3 * volume);
 }
 
+// A needle abx on the top of a box, with a steep spike w over its middle (w has three
+// faces, on ab, bx and xa). Edge ab is the short one, but x is a common neighbour of a and
+// b off the edge's two faces: no collapse of ab keeps the link condition. Every collapse
+// of w, or into w, turns a face by more than 60 degrees, and the spike's creases allow no
+// flip: w has to go first, its three faces becoming abx, and then ab can collapse, the
+// two judged as one edit.
+TEST(Cleanup, TakesAVertexOutOfTheWayOfACollapse) {
+  Mesh m = make_box({0, 0, 0}, {8, 8, 8}, 32, 32, 32);
+  m.face_tags.assign(m.faces.size(), 0);
+  Index a = 0;
+  while (!(m.vertices[a] == Vec3{4, 4, 8})) ++a;
+  Index q = 0;
+  while (!(m.vertices[q] == Vec3{4.25, 4, 8})) ++q;
+  ASSERT_EQ(faces_on(m, a, q).size(), 2u);
+  const Index b = split_edge(m, a, q, m.vertices[a] + 1e-3 * (m.vertices[q] - m.vertices[a]));
+  const std::size_t needle = faces_on(m, a, b)[0];
+  refine_face(m, needle, {centroid(m, needle) + Vec3{0, 0, 0.4}},
+              {Triangle{0, 1, 3}, Triangle{1, 2, 3}, Triangle{2, 0, 3}});
+  ASSERT_TRUE(check_mesh(m).valid());
+  ASSERT_GT(mesh_quality(m).below_1deg, 0u);
+  const CleanupStats s = improve_surface(m);
+  EXPECT_TRUE(check_mesh(m).valid());
+  EXPECT_EQ(s.after.below_1deg, 0u);
+  EXPECT_EQ(s.after.below_5deg, 0u);
+  // The spike is gone and the box is as it was.
+  EXPECT_NEAR(surface_area(m), 6 * 64, 1e-9);
+  EXPECT_NEAR(signed_volume(m), 512, 1e-9);
+}
+
 TEST(Cleanup, FixesACapInAPlaneWithoutLeavingIt) {
   // A box with gridded sides; one vertex of the top side pushed almost onto the far edge
   // of one of its faces: a cap (angles near 0, 0, 180). Whatever fixes it (flip, move,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -54,6 +55,7 @@ constexpr double kSameTagFlipCos = 0.9;    // faces within 26 degrees of each ot
 constexpr double kCrossTagFlipCos = 0.94;  // within 20 degrees
 constexpr double kClusterFraction = 0.2;   // a cluster's edges: under this part of the sliver's middle edge
 constexpr std::size_t kMaxCluster = 8;
+constexpr std::size_t kMaxUnblockSteps = 3;  // edits that may clear the way for a collapse
 constexpr double kSmallestNewAngle = 1e-3;  // degrees; no change makes a face thinner
 constexpr double kSmoothCos = 0.87;        // a vertex moves only if its faces are within 30 degrees of their sum
 constexpr double kNeckFraction = 0.5;  // a neck's loop: edges under this part of the sliver's longest
@@ -416,6 +418,121 @@ class Cleaner {
     return false;
   }
 
+  // A sliver whose short edge ab fails the link condition only because a and b have a
+  // common neighbour beyond the edge's two faces (a fold, or a small tetrahedral pocket
+  // around a point where spheres meet: the usual case at scale). The obstacle is first
+  // taken out of the way, one step at a time: a vertex with three faces, across the edge
+  // or in the way, is removed (its three faces become one); else edge aw or bw to a
+  // vertex w in the way flips. Then ab collapses. Every step is under every validity
+  // check, and the whole is kept only if the worst angle among the faces it touched got
+  // better.
+  bool unblock_collapse(std::uint32_t f) {
+    const Triangle t = m_.faces[f];
+    std::array<double, 3> length;
+    for (int i = 0; i < 3; ++i) length[i] = norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]);
+    const int longest = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    for (int i = 0; i < 3; ++i) {
+      if (i == longest || !(length[i] <= 0.6 * length[longest])) continue;
+      const Index a = t[i], b = t[(i + 1) % 3];
+      if (blocking_vertices(a, b).empty()) continue;
+      std::vector<Step> journal;
+      journal_ = &journal;
+      first_angle_.clear();
+      bool ok = true;
+      for (std::size_t step = 0; ok; ++step) {
+        const std::vector<Index> blocking = blocking_vertices(a, b);
+        if (blocking.empty()) break;
+        ok = false;
+        if (step == kMaxUnblockSteps || blocking.size() > kMaxUnblockSteps) break;
+        std::vector<Edit> steps;
+        for (std::uint32_t g : faces_on_edge(a, b))
+          for (Index o : m_.faces[g])
+            if (o != a && o != b && faces_of_[o].size() == 3) steps.push_back(remove_valence_three(o));
+        for (Index w : blocking) {
+          if (faces_of_[w].size() == 3) steps.push_back(remove_valence_three(w));
+          for (Index end : {a, b})
+            if (const std::vector<std::uint32_t> on = faces_on_edge(end, w); on.size() == 2)
+              steps.push_back(flip(on[0], end, w));
+        }
+        for (Edit& e : steps)
+          if (!e.changed.empty() && evaluate(e, false) && crosses_nothing(e)) {
+            commit(e);
+            ok = true;
+            break;
+          }
+      }
+      if (ok) {
+        ok = false;
+        const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
+        if (on_edge.size() == 2 && link_condition(m_, faces_of_[a], faces_of_[b], on_edge, a, b)) {
+          const Vec3 pa = m_.vertices[a], pb = m_.vertices[b];
+          std::vector<Edit> collapses;
+          for (auto [u, v, target] : {std::tuple{a, b, pa}, std::tuple{b, a, pb}, std::tuple{a, b, 0.5 * (pa + pb)}}) {
+            Edit e = collapse(u, v, on_edge, target);
+            if (evaluate(e, false)) collapses.push_back(std::move(e));
+          }
+          std::stable_sort(collapses.begin(), collapses.end(), [](const Edit& x, const Edit& y) { return x.after > y.after; });
+          for (const Edit& e : collapses)
+            if (crosses_nothing(e)) {
+              commit(e);
+              ok = true;
+              break;
+            }
+        }
+      }
+      if (keep_if_better(ok)) return true;
+    }
+    return false;
+  }
+
+  // The common neighbours of a and b beyond the faces on edge ab: what makes the edge's
+  // collapse fail the link condition (empty unless the edge has two faces).
+  std::vector<Index> blocking_vertices(Index a, Index b) const {
+    const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
+    if (on_edge.size() != 2) return {};
+    std::vector<Index> opposite;
+    for (std::uint32_t g : on_edge)
+      for (Index w : m_.faces[g])
+        if (w != a && w != b) opposite.push_back(w);
+    const std::vector<Index> around_a = vertex_neighbours(m_, faces_of_[a], a);
+    const std::vector<Index> around_b = vertex_neighbours(m_, faces_of_[b], b);
+    std::vector<Index> blocking;
+    for (Index w : around_a)
+      if (std::binary_search(around_b.begin(), around_b.end(), w) &&
+          std::find(opposite.begin(), opposite.end(), w) == opposite.end())
+        blocking.push_back(w);
+    return blocking;
+  }
+
+  // Removal of a vertex with three faces: they become the one face on its three neighbours.
+  Edit remove_valence_three(Index w) const {
+    Edit e;
+    e.kind = Edit::Kind::collapse;
+    const std::vector<std::uint32_t>& fan = faces_of_[w];
+    Triangle first = m_.faces[fan[0]];
+    while (first[0] != w) first = {first[1], first[2], first[0]};
+    const Index p = first[1], q = first[2];
+    Index r = kNoVertex;
+    for (std::uint32_t g : fan)
+      for (Index x : m_.faces[g])
+        if (x != w && x != p && x != q) r = x;
+    if (r == kNoVertex) return e;
+    // The new face must agree with the surface around the fan (the fan itself may be a
+    // spike whose normals say nothing about it): the faces across its three edges.
+    Vec3 reference;
+    for (auto [u, v] : {std::pair{p, q}, std::pair{q, r}, std::pair{r, p}})
+      for (std::uint32_t g : faces_on_edge(u, v))
+        if (std::find(fan.begin(), fan.end(), g) == fan.end()) {
+          const Vec3 n = normal(m_.faces[g]);
+          if (const double length = norm(n); length > 0) reference += n / length;
+        }
+    e.removed = {fan[1], fan[2]};
+    e.changed = {fan[0]};
+    e.triangles = {Triangle{p, q, r}};
+    e.reference = {reference};
+    return e;
+  }
+
   // Face g becomes t; its present normal is the reference no new normal may turn far from.
   void add_change(Edit& e, std::uint32_t g, const Triangle& t) const {
     e.changed.push_back(g);
@@ -572,6 +689,7 @@ class Cleaner {
     if (try_best(options)) return true;
     if (merge_cluster(f)) return true;
     if (widen_neck(f)) return true;
+    if (unblock_collapse(f)) return true;
     options.clear();
     for (Index v : t) move_candidates(v, options);
     return try_best(options);
