@@ -10,6 +10,7 @@
 #include "molsurf/boolean.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/icosphere.hpp"
+#include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/shapes.hpp"
 #include "molsurf/surface.hpp"
@@ -254,6 +255,28 @@ TEST(Cleanup, TakesAVertexOutOfTheWayOfACollapse) {
   // The spike is gone and the box is as it was.
   EXPECT_NEAR(surface_area(m), 6 * 64, 1e-9);
   EXPECT_NEAR(signed_volume(m), 512, 1e-9);
+}
+
+// A cavity of 14 faces and 6e-6 cubic angstrom from 4yvs's raw surface (density 2, probe
+// 1.4), inside a box. Edit by edit, each face keeping its orientation within the turn the
+// cleanup allows, it used to end as a tetrahedron turned inside out: a valid-looking
+// component with positive volume where a cavity was. A component's volume keeps its sign
+// (and at least half its size).
+TEST(Cleanup, NeverTurnsASmallCavityInsideOut) {
+  Mesh cavity = read_mesh(std::string(MOLSURF_DATA_DIR) + "/../tests/data/cleanup/4yvs_small_cavity.off");
+  ASSERT_LT(signed_volume(cavity), 0);
+  Mesh m = make_box({136.3, -64.5, -3.4}, {136.7, -63.8, -2.8}, 2, 2, 2);
+  // The atoms the cavity's faces come from (renumbered in order).
+  cavity.face_tags = {3, 3, 3, 3, 3, 1, 1, 1, 1, 4, 2, 2, 2, 2};
+  m.face_tags.assign(m.faces.size(), 0);
+  m.append(cavity);
+  ASSERT_TRUE(check_mesh(m).valid());
+  const double volume = signed_volume(m);
+  improve_surface(m);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.valid()) << ::testing::PrintToString(c.defects());
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_NEAR(signed_volume(m), volume, 3e-6);
 }
 
 TEST(Cleanup, FixesACapInAPlaneWithoutLeavingIt) {

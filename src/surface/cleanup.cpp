@@ -73,7 +73,7 @@ struct Edit {
   Index moved = kNoVertex;             // a vertex that moves to `target`
   Vec3 target;
   // Set by Cleaner::evaluate.
-  double before = 0, after = 0, area_change = 0;
+  double before = 0, after = 0, area_change = 0, volume_change = 0;
   int rank = 0;  // 0: the seams (where spheres meet) stay where they are; 1: they move a little
 };
 
@@ -92,6 +92,18 @@ class Cleaner {
     grid_ = std::make_unique<FaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
     for (std::uint32_t f = 0; f < m.faces.size(); ++f) grid_->insert(f);
     area_budget_ = options.max_area_change * surface_area(m);
+    // Edits keep the topology, so a face stays in its component.
+    Components components = connected_components(m);
+    component_of_ = std::move(components.face_component);
+    component_volume_.assign(components.count, 0);
+    std::vector<Index> origin(components.count, kNoVertex);
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f) {
+      const Triangle& t = m.faces[f];
+      Index& o = origin[component_of_[f]];
+      if (o == kNoVertex) o = t[0];
+      component_volume_[component_of_[f]] += tetrahedron_volume(m.vertices[o], m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
+    }
+    initial_volume_ = component_volume_;
   }
 
   void run(CleanupStats& stats) {
@@ -184,7 +196,28 @@ class Cleaner {
     e.before = before;
     e.after = after;
     e.area_change = area_after - area_before;
-    return std::abs(area_drift_ + e.area_change) <= area_budget_;
+    if (!(std::abs(area_drift_ + e.area_change) <= area_budget_)) return false;
+    // Each face's own turn says nothing about a component a few faces across (a small
+    // cavity): edit by edit it could be flattened and turned inside out. Its volume keeps
+    // its sign and at least half its size. The change is measured about a point of the
+    // edit: the old and the new faces span the same boundary, so the origin cancels.
+    if (e.triangles.empty()) return true;
+    const Vec3 o = pos(e.triangles.front()[0]);
+    double volume_change = 0;
+    for (const Triangle& t : e.triangles) volume_change += tetrahedron_volume(o, pos(t[0]), pos(t[1]), pos(t[2]));
+    for (const auto* list : {&e.removed, &e.changed})
+      for (std::uint32_t f : *list) {
+        const Triangle& t = m_.faces[f];
+        volume_change -= tetrahedron_volume(o, m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
+      }
+    e.volume_change = volume_change;
+    const std::uint32_t component = component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()];
+    const double initial = initial_volume_[component], volume = component_volume_[component] + volume_change;
+    return volume * initial > 0 && std::abs(volume) >= 0.5 * std::abs(initial);
+  }
+
+  static double tetrahedron_volume(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return dot(a - o, cross(b - o, c - o)) / 6;
   }
 
   // Exactly: no face of the edit meets a face around it, or another face of the edit,
@@ -249,6 +282,7 @@ class Cleaner {
       for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
     }
     area_drift_ += e.area_change;
+    component_volume_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] += e.volume_change;
     switch (e.kind) {
       case Edit::Kind::collapse: ++collapses_; break;
       case Edit::Kind::flip: ++flips_; break;
@@ -273,6 +307,7 @@ class Cleaner {
         for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
       }
     area_drift_ -= e.area_change;
+    component_volume_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] -= e.volume_change;
     switch (e.kind) {
       case Edit::Kind::collapse: --collapses_; break;
       case Edit::Kind::flip: --flips_; break;
@@ -726,6 +761,8 @@ class Cleaner {
   std::unique_ptr<FaceGrid> grid_;
   std::vector<std::uint32_t> skip_, candidates_;
   double area_budget_ = 0, area_drift_ = 0;
+  std::vector<std::uint32_t> component_of_;  // per face
+  std::vector<double> component_volume_, initial_volume_;
   std::size_t collapses_ = 0, flips_ = 0, moves_ = 0;
   // While a compound edit is tried: its steps, and the angle of each face it touched as
   // it was before.
