@@ -46,9 +46,12 @@ Vec3 rounded_point(const geometry::ImplicitPoint& p) {
   // The filter's interval is usually a few ulps wide: its midpoint is as good a rounding
   // as any; only wide intervals pay for the exact rational.
   Vec3 mid{p.coordinate(0).mid(), p.coordinate(1).mid(), p.coordinate(2).mid()};
+  // An unbounded interval (the filter's denominator straddles zero: a line nearly parallel
+  // to the plane) has width inf <= 4 eps inf and a NaN midpoint: it must take the exact path.
   for (int axis = 0; axis < 3; ++axis) {
     const auto& i = p.coordinate(axis);
-    if (!(i.hi - i.lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(i.lo), std::fabs(i.hi))))
+    if (!std::isfinite(i.lo) || !std::isfinite(i.hi) ||
+        !(i.hi - i.lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(i.lo), std::fabs(i.hi))))
       return p.rounded();
   }
   return mid;

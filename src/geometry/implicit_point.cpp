@@ -55,7 +55,7 @@ int sign_of(const SmallInteger& v) { return v.sign(); }
 // plane abc, for any integer type with + - * (`scale` turns a defining double into one):
 // P = (q dp - p dq) / (dp - dq), dp = det[b-a, c-a, p-a], dq = det[b-a, c-a, q-a].
 template <class Int, class Scale>
-std::array<Int, 4> line_plane_homogeneous(const std::array<Vec3, 5>& def, Scale scale) {
+std::array<Int, 4> line_plane_homogeneous(const std::array<Vec3, 9>& def, Scale scale) {
   std::array<Int, 3> p, q, u, v, pa, qa, normal;
   for (int i = 0; i < 3; ++i) {
     const Int a = scale(def[2][i]);
@@ -78,6 +78,45 @@ std::array<Int, 4> line_plane_homogeneous(const std::array<Vec3, 5>& def, Scale 
   return h;
 }
 
+// Homogeneous integer coordinates of the point where three planes meet, each plane given
+// by three points (a, b, c): normal n = (b - a) x (c - a), offset d = n . a; the point is
+// (d0 n1 x n2 + d1 n2 x n0 + d2 n0 x n1) / (n0 . n1 x n2) (Cramer's rule).
+template <class Int, class Scale>
+std::array<Int, 4> three_planes_homogeneous(const std::array<Vec3, 9>& def, Scale scale) {
+  std::array<std::array<Int, 3>, 3> n;
+  std::array<Int, 3> d;
+  for (int k = 0; k < 3; ++k) {
+    std::array<Int, 3> a, u, v;
+    for (int i = 0; i < 3; ++i) {
+      a[i] = scale(def[3 * k][i]);
+      u[i] = scale(def[3 * k + 1][i]) - a[i];
+      v[i] = scale(def[3 * k + 2][i]) - a[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, l = (i + 2) % 3;
+      n[k][i] = u[j] * v[l] - u[l] * v[j];
+    }
+    d[k] = n[k][0] * a[0] + n[k][1] * a[1] + n[k][2] * a[2];
+  }
+  auto cross = [](const std::array<Int, 3>& x, const std::array<Int, 3>& y) {
+    return std::array<Int, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  const std::array<Int, 3> c12 = cross(n[1], n[2]), c20 = cross(n[2], n[0]), c01 = cross(n[0], n[1]);
+  std::array<Int, 4> h;
+  for (int i = 0; i < 3; ++i) h[i] = d[0] * c12[i] + d[1] * c20[i] + d[2] * c01[i];
+  h[3] = n[0][0] * c12[0] + n[0][1] * c12[1] + n[0][2] * c12[2];
+  if (sign_of(h[3]) < 0)
+    for (Int& x : h) x = -x;
+  return h;
+}
+
+// The one-ulp box that holds a value truncated toward zero.
+Interval truncation_box(double r) {
+  if (r > 0) return {r, interval_detail::up(r)};
+  if (r < 0) return {interval_detail::down(r), r};
+  return {interval_detail::down(0.0), interval_detail::up(0.0)};
+}
+
 }  // namespace
 
 ImplicitPoint ImplicitPoint::explicit_point(const Vec3& v) {
@@ -89,7 +128,7 @@ ImplicitPoint ImplicitPoint::explicit_point(const Vec3& v) {
 
 ImplicitPoint ImplicitPoint::line_plane(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
   ImplicitPoint point;
-  point.is_lpi_ = true;
+  point.kind_ = Kind::line_plane;
   point.def_ = {p, q, a, b, c};
   // P = p + t (q - p), t = det[b-a, c-a, p-a] / (det[b-a, c-a, p-a] - det[b-a, c-a, q-a]).
   const IVec ia = to_interval(a), ip = to_interval(p), iq = to_interval(q);
@@ -97,37 +136,81 @@ ImplicitPoint ImplicitPoint::line_plane(const Vec3& p, const Vec3& q, const Vec3
   const Interval dp = det3(u, v, sub(ip, ia)), dq = det3(u, v, sub(iq, ia));
   const Interval t = dp / (dp - dq);
   for (int i = 0; i < 3; ++i) point.box_[i] = ip[i] + t * (iq[i] - ip[i]);
+  point.bound_box_exactly();
   return point;
 }
 
+ImplicitPoint ImplicitPoint::three_planes(const std::array<Vec3, 9>& planes) {
+  ImplicitPoint point;
+  point.kind_ = Kind::three_planes;
+  point.def_ = planes;
+  IVec n[3];
+  Interval d[3];
+  for (int k = 0; k < 3; ++k) {
+    const IVec a = to_interval(planes[3 * k]);
+    const IVec u = sub(to_interval(planes[3 * k + 1]), a), v = sub(to_interval(planes[3 * k + 2]), a);
+    n[k] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    d[k] = n[k][0] * a[0] + n[k][1] * a[1] + n[k][2] * a[2];
+  }
+  auto cross = [](const IVec& x, const IVec& y) {
+    return IVec{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  const IVec c12 = cross(n[1], n[2]), c20 = cross(n[2], n[0]), c01 = cross(n[0], n[1]);
+  const Interval w = n[0][0] * c12[0] + n[0][1] * c12[1] + n[0][2] * c12[2];
+  for (int i = 0; i < 3; ++i) point.box_[i] = (d[0] * c12[i] + d[1] * c20[i] + d[2] * c01[i]) / w;
+  point.bound_box_exactly();
+  return point;
+}
+
+void ImplicitPoint::bound_box_exactly() {
+  bool bounded = true;
+  for (const Interval& i : box_) bounded = bounded && std::isfinite(i.lo) && std::isfinite(i.hi);
+  if (bounded) return;
+  const Vec3 r = rounded();
+  for (int i = 0; i < 3; ++i) box_[i] = truncation_box(r[i]);
+}
+
 ExactPoint ImplicitPoint::exact() const {
-  if (!is_lpi_) return {mpq_class(def_[0].x), mpq_class(def_[0].y), mpq_class(def_[0].z)};
-  const QVec p = to_rational(def_[0]), q = to_rational(def_[1]), a = to_rational(def_[2]);
-  const QVec u = sub(to_rational(def_[3]), a), v = sub(to_rational(def_[4]), a);
-  const mpq_class dp = det3(u, v, sub(p, a)), dq = det3(u, v, sub(q, a));
-  const mpq_class t = dp / (dp - dq);
-  return {p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2])};
+  if (is_explicit()) return {mpq_class(def_[0].x), mpq_class(def_[0].y), mpq_class(def_[0].z)};
+  const int e = common_exponent(defining_values());
+  const HomogeneousPoint h = homogeneous(e);
+  ExactPoint out;
+  for (int i = 0; i < 3; ++i) {
+    mpq_class& x = i == 0 ? out.x : (i == 1 ? out.y : out.z);
+    x = mpq_class(h[i], h.w);
+    x.canonicalize();
+    if (e > 0)
+      mpq_mul_2exp(x.get_mpq_t(), x.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+    else if (e < 0)
+      mpq_div_2exp(x.get_mpq_t(), x.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+  }
+  return out;
 }
 
 std::span<const double> ImplicitPoint::defining_values() const {
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
-  return {&def_[0].x, is_lpi_ ? std::size_t{15} : std::size_t{3}};
+  const std::size_t count = kind_ == Kind::explicit_point ? 3 : (kind_ == Kind::line_plane ? 15 : 27);
+  return {&def_[0].x, count};
 }
 
 HomogeneousPoint ImplicitPoint::homogeneous(int exponent) const {
-  if (!is_lpi_) {
+  if (is_explicit()) {
     const IntVec v = scaled(def_[0], exponent);
     return {v.x, v.y, v.z, 1};
   }
-  auto h = line_plane_homogeneous<mpz_class>(def_, [&](double x) { return scaled_integer(x, exponent); });
+  const auto scale = [&](double x) { return scaled_integer(x, exponent); };
+  auto h = kind_ == Kind::line_plane ? line_plane_homogeneous<mpz_class>(def_, scale)
+                                     : three_planes_homogeneous<mpz_class>(def_, scale);
   return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
 }
 
 SmallHomogeneousPoint ImplicitPoint::small_homogeneous(int exponent) const {
-  if (!is_lpi_)
+  if (is_explicit())
     return {SmallInteger::scaled(def_[0].x, exponent), SmallInteger::scaled(def_[0].y, exponent),
             SmallInteger::scaled(def_[0].z, exponent), SmallInteger::scaled(1.0, 0)};
-  auto h = line_plane_homogeneous<SmallInteger>(def_, [&](double x) { return SmallInteger::scaled(x, exponent); });
+  const auto scale = [&](double x) { return SmallInteger::scaled(x, exponent); };
+  auto h = kind_ == Kind::line_plane ? line_plane_homogeneous<SmallInteger>(def_, scale)
+                                     : three_planes_homogeneous<SmallInteger>(def_, scale);
   return {h[0], h[1], h[2], h[3]};
 }
 
@@ -174,7 +257,7 @@ int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, in
 }
 
 Vec3 ImplicitPoint::rounded() const {
-  if (!is_lpi_) return def_[0];
+  if (is_explicit()) return def_[0];
   // X / W from the integer form, as a quotient of about 64 bits (one truncating integer
   // division per coordinate: far cheaper than a canonical rational).
   const int exponent = common_exponent(defining_values());
@@ -227,6 +310,36 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d
   const IntVec za = scaled(a, e);
   const IntVec shifted{h.x - za.x * h.w, h.y - za.y * h.w, h.z - za.z * h.w};
   return sgn(det3(scaled(b, e) - za, scaled(c, e) - za, shifted));
+}
+
+}  // namespace molsurf::geometry
+
+namespace molsurf::geometry {
+
+bool same_point(const ImplicitPoint& a, const ImplicitPoint& b) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const Interval &x = a.coordinate(axis), &y = b.coordinate(axis);
+    if (x.hi < y.lo || y.hi < x.lo) return false;
+  }
+  if (a.is_explicit() && b.is_explicit()) return a.explicit_value() == b.explicit_value();
+  const int e = common_exponent_of({&a, &b});
+  const SmallHomogeneousPoint sa = a.small_homogeneous(e), sb = b.small_homogeneous(e);
+  if (!sa.overflow() && !sb.overflow()) {
+    bool decided = true;
+    for (int axis = 0; axis < 3; ++axis) {
+      const int c = compare_homogeneous(sa, sb, axis);
+      if (c == kSmallOverflow) {
+        decided = false;
+        break;
+      }
+      if (c != 0) return false;
+    }
+    if (decided) return true;
+  }
+  const HomogeneousPoint ha = a.homogeneous(e), hb = b.homogeneous(e);
+  for (int axis = 0; axis < 3; ++axis)
+    if (compare_homogeneous(ha, hb, axis) != 0) return false;
+  return true;
 }
 
 }  // namespace molsurf::geometry

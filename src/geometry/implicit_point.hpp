@@ -1,11 +1,14 @@
 #pragma once
-// Points of the arrangement of two meshes, defined by the input doubles that make them
-// (DESIGN: "implicit points"): an input vertex, or the crossing of the line through two
-// input points p, q with the plane through three input points a, b, c (LPI). Predicates
+// Points of the arrangement of meshes, defined by the input doubles that make them
+// (DESIGN: "implicit points"): an input vertex, the crossing of the line through two
+// input points p, q with the plane through three input points a, b, c (LPI), or the
+// crossing of three planes, each through three input points (TPI: where the traces of two
+// neighbours cross inside a face, in the one-pass surface). Predicates
 // on them are signs of polynomials in the input doubles: decided by interval arithmetic
 // first, and by exact GMP rationals when the interval cannot tell. The double
 // coordinates of an LPI point are only an output (rounded after every decision).
 #include <array>
+#include <cstdint>
 #include <initializer_list>
 #include <span>
 #include <gmpxx.h>
@@ -42,14 +45,20 @@ class ImplicitPoint {
   // The line pq must cross the plane abc at exactly one point (orient3d(a,b,c,p) !=
   // orient3d(a,b,c,q) exactly); the caller has decided that with exact predicates.
   static ImplicitPoint line_plane(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c);
+  // The planes (a0 b0 c0), (a1 b1 c1), (a2 b2 c2) must meet at exactly one point (their
+  // normals linearly independent, decided exactly by the caller).
+  static ImplicitPoint three_planes(const std::array<Vec3, 9>& planes);
 
-  bool is_explicit() const { return !is_lpi_; }
+  enum class Kind : std::uint8_t { explicit_point, line_plane, three_planes };
+  Kind kind() const { return kind_; }
+  bool is_explicit() const { return kind_ == Kind::explicit_point; }
   const Vec3& explicit_value() const { return def_[0]; }  // explicit points only
-  const std::array<Vec3, 5>& definition() const { return def_; }  // p, q, a, b, c
+  // Explicit: v; line-plane: p, q, a, b, c; three planes: a0 b0 c0 a1 b1 c1 a2 b2 c2.
+  const std::array<Vec3, 9>& definition() const { return def_; }
   const Interval& coordinate(int axis) const { return box_[axis]; }
 
   ExactPoint exact() const;
-  // The defining doubles (3 for an explicit point, 15 for a crossing), for choosing a
+  // The defining doubles (3 for an explicit point, 15 or 27 for a crossing), for choosing a
   // common exponent, and the homogeneous integer form scaled by 2^-exponent.
   std::span<const double> defining_values() const;
   HomogeneousPoint homogeneous(int exponent) const;
@@ -59,10 +68,18 @@ class ImplicitPoint {
   Vec3 rounded() const;
 
  private:
-  std::array<Vec3, 5> def_{};
+  // The filter's box can be unbounded (its denominator straddles zero when a line is
+  // nearly parallel to a plane, or three planes nearly share a line): then it is replaced
+  // by the one-ulp box around the exact value, so every box is finite.
+  void bound_box_exactly();
+
+  std::array<Vec3, 9> def_{};
   std::array<Interval, 3> box_{};
-  bool is_lpi_ = false;
+  Kind kind_ = Kind::explicit_point;
 };
+
+// Exact equality of two points (all three coordinates).
+bool same_point(const ImplicitPoint& a, const ImplicitPoint& b);
 
 // The common exponent of the defining doubles of some points.
 int common_exponent_of(std::initializer_list<const ImplicitPoint*> points);
