@@ -1,0 +1,155 @@
+#include "surface/atom_polyhedra.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <numeric>
+#include <tuple>
+#include <unordered_map>
+
+#include "molsurf/icosphere.hpp"
+
+namespace molsurf::surface_detail {
+
+namespace {
+
+PolyhedronTemplate make_template(int frequency) {
+  PolyhedronTemplate t;
+  t.frequency = frequency;
+  t.unit = make_icosphere({0, 0, 0}, 1.0, {.frequency = frequency, .area_corrected = false});
+  t.area = surface_area(t.unit);
+  std::map<std::pair<Index, Index>, std::uint32_t> edge_id;
+  t.face_edges.resize(t.unit.faces.size());
+  double inradius = 1;
+  for (std::size_t f = 0; f < t.unit.faces.size(); ++f) {
+    const Triangle& c = t.unit.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      const Index a = std::min(c[k], c[(k + 1) % 3]), b = std::max(c[k], c[(k + 1) % 3]);
+      auto [it, inserted] = edge_id.try_emplace({a, b}, static_cast<std::uint32_t>(t.edges.size()));
+      if (inserted) t.edges.push_back({a, b});
+      t.face_edges[f][k] = it->second;
+    }
+    const Vec3 &p = t.unit.vertices[c[0]], &q = t.unit.vertices[c[1]], &r = t.unit.vertices[c[2]];
+    const Vec3 n = cross(q - p, r - p);
+    inradius = std::min(inradius, dot(n, p) / std::sqrt(dot(n, n)));
+  }
+  t.inradius = inradius;
+  return t;
+}
+
+}  // namespace
+
+AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options) {
+  const std::size_t n = atoms.size();
+  centre_.resize(n);
+  scale_.resize(n);
+  circumradius_.resize(n);
+  inradius_.resize(n);
+  template_of_.resize(n);
+  duplicate_.assign(n, 0);
+  std::map<int, std::uint16_t> template_index;
+  std::vector<int> frequency(n);
+  std::vector<double> radius(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    frequency[i] = sphere_frequency(atoms[i], options);
+    radius[i] = sphere_radius(atoms[i], options);
+    auto [it, inserted] = template_index.try_emplace(frequency[i], static_cast<std::uint16_t>(templates_.size()));
+    if (inserted) templates_.push_back(make_template(frequency[i]));
+    template_of_[i] = it->second;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const PolyhedronTemplate& t = templates_[template_of_[i]];
+    centre_[i] = atoms[i].centre;
+    // As make_icosphere: the circumradius scaled so the area equals the sphere's.
+    scale_[i] = radius[i];
+    if (options.area_corrected) scale_[i] *= std::sqrt(4 * std::numbers::pi / t.area);
+    // Unit vertices have length 1 within a few ulps; the margins cover that and the
+    // rounding of centre + u * scale many times over.
+    circumradius_[i] = scale_[i] * (1 + 1e-9) + 1e-9 * std::max({std::fabs(centre_[i].x), std::fabs(centre_[i].y),
+                                                                  std::fabs(centre_[i].z)});
+    inradius_[i] = std::max(0.0, scale_[i] * t.inradius * (1 - 1e-9) -
+                                     1e-9 * std::max({std::fabs(centre_[i].x), std::fabs(centre_[i].y),
+                                                      std::fabs(centre_[i].z)}));
+  }
+  // Identical atoms: sort by (centre, radius, frequency), equal runs keep their first.
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  auto key = [&](std::uint32_t i) {
+    return std::tuple(centre_[i].x, centre_[i].y, centre_[i].z, radius[i], frequency[i], options.area_corrected);
+  };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const auto ka = key(a), kb = key(b);
+    return ka != kb ? ka < kb : a < b;
+  });
+  for (std::size_t k = 1; k < n; ++k)
+    if (key(order[k]) == key(order[k - 1])) duplicate_[order[k]] = 1;
+}
+
+void AtomPolyhedra::vertices(std::size_t atom, std::vector<Vec3>& out) const {
+  const auto& unit = shape(atom).unit.vertices;
+  out.resize(unit.size());
+  for (std::size_t v = 0; v < unit.size(); ++v) out[v] = centre_[atom] + unit[v] * scale_[atom];
+}
+
+std::size_t AtomPolyhedra::duplicates() const {
+  return static_cast<std::size_t>(std::count(duplicate_.begin(), duplicate_.end(), 1));
+}
+
+std::size_t AtomPolyhedra::face_count() const {
+  std::size_t faces = 0;
+  for (std::size_t i = 0; i < size(); ++i) faces += shape(i).unit.faces.size();
+  return faces;
+}
+
+NeighbourList find_neighbours(const AtomPolyhedra& polyhedra) {
+  const std::size_t n = polyhedra.size();
+  NeighbourList list;
+  list.first.assign(n + 1, 0);
+  if (n == 0) return list;
+  double largest = 0;
+  BoundingBox box;
+  for (std::size_t i = 0; i < n; ++i) {
+    largest = std::max(largest, polyhedra.circumradius(i));
+    box.extend(polyhedra.centre(i));
+  }
+  // Cells of the largest diameter: a neighbour is at most one cell away on each axis.
+  const double cell = std::max(2 * largest, 1e-6);
+  auto cell_of = [&](const Vec3& p) {
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor((p.x - box.min.x) / cell)),
+                                       static_cast<std::int64_t>(std::floor((p.y - box.min.y) / cell)),
+                                       static_cast<std::int64_t>(std::floor((p.z - box.min.z) / cell))};
+  };
+  auto pack = [](const std::array<std::int64_t, 3>& c) {
+    return static_cast<std::uint64_t>(c[0]) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(c[1]) * 0xC2B2AE3D27D4EB4Full ^
+           static_cast<std::uint64_t>(c[2]) * 0x165667B19E3779F9ull;
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!polyhedra.duplicate(i)) cells[pack(cell_of(polyhedra.centre(i)))].push_back(static_cast<std::uint32_t>(i));
+  std::vector<std::vector<std::uint32_t>> rows(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (polyhedra.duplicate(i)) continue;
+    const auto c = cell_of(polyhedra.centre(i));
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find(pack({c[0] + dx, c[1] + dy, c[2] + dz}));
+          if (it == cells.end()) continue;
+          for (std::uint32_t j : it->second) {
+            if (j == i) continue;
+            const Vec3 d = polyhedra.centre(j) - polyhedra.centre(i);
+            const double reach = polyhedra.circumradius(i) + polyhedra.circumradius(j);
+            if (dot(d, d) <= reach * reach * (1 + 1e-9)) rows[i].push_back(j);
+          }
+        }
+    std::sort(rows[i].begin(), rows[i].end());
+    rows[i].erase(std::unique(rows[i].begin(), rows[i].end()), rows[i].end());
+  }
+  for (std::size_t i = 0; i < n; ++i) list.first[i + 1] = list.first[i] + static_cast<std::uint32_t>(rows[i].size());
+  list.atoms.reserve(list.first[n]);
+  for (const auto& row : rows) list.atoms.insert(list.atoms.end(), row.begin(), row.end());
+  return list;
+}
+
+}  // namespace molsurf::surface_detail

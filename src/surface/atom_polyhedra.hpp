@@ -1,0 +1,64 @@
+#pragma once
+// Every atom's polyhedron (its icosphere), without storing them: one unit template per
+// frequency, and per atom a centre and a scale. A vertex is computed as centre + u * scale,
+// the same doubles make_icosphere() produces, so the one-pass and the pairwise methods
+// join exactly the same polyhedra.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/mesh.hpp"
+#include "molsurf/surface.hpp"
+
+namespace molsurf::surface_detail {
+
+struct PolyhedronTemplate {
+  int frequency = 0;
+  Mesh unit;                                       // circumradius 1, centred at the origin
+  std::vector<std::array<Index, 2>> edges;         // (lower, higher) vertex
+  std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k runs from corner k to k + 1
+  double area = 0;                                 // of the unit polyhedron
+  double inradius = 0;  // a lower bound on every face plane's distance from the centre
+};
+
+class AtomPolyhedra {
+ public:
+  AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options);
+
+  std::size_t size() const { return centre_.size(); }
+  const Vec3& centre(std::size_t atom) const { return centre_[atom]; }
+  const PolyhedronTemplate& shape(std::size_t atom) const { return templates_[template_of_[atom]]; }
+  // Every vertex lies within circumradius and every face plane beyond inradius of the
+  // centre (both with a relative margin far above the rounding of the vertices).
+  double circumradius(std::size_t atom) const { return circumradius_[atom]; }
+  double inradius(std::size_t atom) const { return inradius_[atom]; }
+  Vec3 vertex(std::size_t atom, Index v) const { return centre_[atom] + shape(atom).unit.vertices[v] * scale_[atom]; }
+  void vertices(std::size_t atom, std::vector<Vec3>& out) const;
+  // Atoms identical to a lower-indexed one (same centre, radius and frequency): their
+  // polyhedra coincide, and by the rule that ties go to the lower index they add nothing.
+  bool duplicate(std::size_t atom) const { return duplicate_[atom] != 0; }
+  std::size_t duplicates() const;
+  std::size_t face_count() const;  // of all polyhedra
+
+ private:
+  std::vector<PolyhedronTemplate> templates_;
+  std::vector<std::uint16_t> template_of_;
+  std::vector<Vec3> centre_;
+  std::vector<double> scale_, circumradius_, inradius_;
+  std::vector<std::uint8_t> duplicate_;
+};
+
+// Atoms whose polyhedra can meet: centres closer than the sum of circumradii, found with a
+// uniform cell grid. Compressed rows, each sorted by atom index; duplicates have no row.
+struct NeighbourList {
+  std::vector<std::uint32_t> first;  // size atoms + 1
+  std::vector<std::uint32_t> atoms;
+  std::span<const std::uint32_t> of(std::size_t atom) const {
+    return {atoms.data() + first[atom], atoms.data() + first[atom + 1]};
+  }
+};
+NeighbourList find_neighbours(const AtomPolyhedra& polyhedra);
+
+}  // namespace molsurf::surface_detail

@@ -1,0 +1,599 @@
+#include "surface/one_pass_union.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+#include "boolean/intersect.hpp"
+#include "boolean/retriangulate.hpp"
+#include "boolean/split.hpp"
+#include "common/parallel_exceptions.hpp"
+#include "geometry/implicit_point.hpp"
+#include "geometry/predicates.hpp"
+#include "surface/atom_polyhedra.hpp"
+
+namespace molsurf::surface_detail {
+
+namespace {
+
+using geometry::ImplicitPoint;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+BoundingBox box_of(const Vec3& a, const Vec3& b, const Vec3& c) {
+  BoundingBox box;
+  box.extend(a);
+  box.extend(b);
+  box.extend(c);
+  return box;
+}
+
+// A neighbour's polyhedron as the trimmed atom sees it: its vertices, and the faces that
+// can reach the trimmed atom (their boxes meet its box): the lens.
+struct Neighbour {
+  std::uint32_t atom = 0;
+  Vec3 centre;
+  double inradius = 0, circumradius = 0;
+  const PolyhedronTemplate* shape = nullptr;
+  std::vector<Vec3> vertices;
+  std::vector<std::uint32_t> lens;
+  std::vector<BoundingBox> lens_boxes;
+  BoundingBox box;
+
+  std::array<Vec3, 3> face(std::uint32_t g) const {
+    const Triangle& t = shape->unit.faces[g];
+    return {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+  }
+};
+
+// x in the closed cone from the centre o over the triangle (a, b, c), counter-clockwise
+// seen from outside: o lies strictly inside, so for x in the triangle's plane this is x
+// in the closed triangle.
+template <class Point>
+bool in_cone(const Vec3& o, const std::array<Vec3, 3>& t, const Point& x) {
+  for (int k = 0; k < 3; ++k)
+    if (geometry::orient3d(o, t[k], t[(k + 1) % 3], x) < 0) return false;
+  return true;
+}
+
+// Exact: x in the closed polyhedron. The polyhedron is convex and star-shaped from its
+// centre, so x is inside iff it is behind the face that the ray from the centre through
+// x meets.
+bool inside_closed(const ImplicitPoint& x, const Neighbour& n) {
+  const Vec3 m{x.coordinate(0).mid(), x.coordinate(1).mid(), x.coordinate(2).mid()};
+  const Vec3 d = m - n.centre;
+  const double d2 = dot(d, d);
+  if (d2 < n.inradius * n.inradius) return true;
+  if (d2 > n.circumradius * n.circumradius) return false;
+  auto try_face = [&](std::uint32_t g, bool& inside) {
+    const auto t = n.face(g);
+    if (!in_cone(n.centre, t, x)) return false;
+    inside = geometry::orient3d(t[0], t[1], t[2], x) <= 0;
+    return true;
+  };
+  // Faces in order of how well their centroid direction matches x's (a guess that is
+  // usually right first time; the exact cone test decides).
+  std::vector<std::pair<double, std::uint32_t>> order;
+  order.reserve(n.lens.size());
+  for (std::uint32_t g : n.lens) {
+    const auto t = n.face(g);
+    order.emplace_back(-dot((t[0] + t[1] + t[2]) * (1.0 / 3) - n.centre, d), g);
+  }
+  std::sort(order.begin(), order.end());
+  bool inside = false;
+  for (const auto& [score, g] : order)
+    if (try_face(g, inside)) return inside;
+  for (std::uint32_t g = 0; g < n.shape->unit.faces.size(); ++g)
+    if (try_face(g, inside)) return inside;
+  throw std::logic_error("one-pass union: a point in no face's cone");
+}
+
+enum class Plane : std::uint8_t { cuts, coplanar_same, coplanar_opposite };
+
+// Where a point lies on the face being trimmed: corner k, inside edge k (corner k to
+// k + 1), or in the interior.
+struct Place {
+  boolean_engine::Where where = boolean_engine::Where::interior;
+  std::uint8_t index = 0;
+};
+
+struct Segment {
+  std::uint32_t s = 0, t = 0;  // local point ids
+  std::uint32_t neighbour = 0;  // index into the atom's neighbour list
+  std::uint32_t plane = 0;      // the neighbour's face whose plane holds it
+};
+
+// Everything one face's trimming builds, reused from face to face (no allocation in the
+// steady state).
+struct FaceWork {
+  std::vector<ImplicitPoint> points;
+  std::vector<Place> places;
+  std::vector<std::vector<std::uint32_t>> on_neighbour;  // per point: neighbours whose boundary holds it
+  std::vector<Segment> segments;
+  std::vector<std::uint32_t> near;   // neighbours whose boxes meet the face's
+  std::vector<std::uint32_t> relevant;
+  std::vector<Plane> plane_kind;     // per neighbour (valid for relevant ones)
+
+  void clear() {
+    points.clear();
+    places.clear();
+    on_neighbour.clear();
+    segments.clear();
+    near.clear();
+    relevant.clear();
+  }
+
+  // The id of x, merged with an equal point already there.
+  std::uint32_t add(const ImplicitPoint& x, Place place, std::uint32_t neighbour) {
+    for (std::uint32_t k = 0; k < points.size(); ++k)
+      if (geometry::same_point(points[k], x)) {
+        // The simplest place wins (a corner over an edge over the interior).
+        if (place.where < places[k].where) places[k] = place;
+        auto& on = on_neighbour[k];
+        if (neighbour != ~0u && std::find(on.begin(), on.end(), neighbour) == on.end()) on.push_back(neighbour);
+        return k;
+      }
+    points.push_back(x);
+    places.push_back(place);
+    on_neighbour.emplace_back();
+    if (neighbour != ~0u) on_neighbour.back().push_back(neighbour);
+    return static_cast<std::uint32_t>(points.size() - 1);
+  }
+};
+
+Place place_from_sides(const std::array<int, 3>& side) {
+  // side[k]: orientation of x against the plane through the centre and edge k; zero on it.
+  const int zeros = (side[0] == 0) + (side[1] == 0) + (side[2] == 0);
+  if (zeros == 0) return {boolean_engine::Where::interior, 0};
+  if (zeros == 1)
+    for (std::uint8_t k = 0; k < 3; ++k)
+      if (side[k] == 0) return {boolean_engine::Where::edge, k};
+  // On edges k and k - 1: corner k.
+  for (std::uint8_t k = 0; k < 3; ++k)
+    if (side[k] == 0 && side[(k + 2) % 3] == 0) return {boolean_engine::Where::corner, k};
+  throw std::logic_error("one-pass union: a point on all three edges of a face");
+}
+
+// The output of one atom: its kept pieces, with points merged by exact value.
+struct AtomPieces {
+  std::vector<ImplicitPoint> points;
+  std::vector<Vec3> rounded;
+  std::vector<Triangle> triangles;
+  std::size_t faces_inside = 0, faces_whole = 0, faces_cut = 0, crossings = 0;
+};
+
+struct Vec3Hash {
+  std::size_t operator()(const Vec3& v) const {
+    std::uint64_t h = 0;
+    for (double x : {v.x, v.y, v.z}) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+      h ^= h >> 31;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+struct Vec3BitsEqual {
+  bool operator()(const Vec3& a, const Vec3& b) const { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+};
+
+// Points merged by exact value. Rounding (truncation of the exact value) is a function
+// of the value alone, so equal points have equal rounded coordinates: those are the hash.
+class PointTable {
+ public:
+  std::uint32_t add(const ImplicitPoint& x, const Vec3& rounded, std::vector<ImplicitPoint>& points,
+                    std::vector<Vec3>& rounded_points) {
+    auto [it, inserted] = first_.try_emplace(rounded, static_cast<std::uint32_t>(points.size()));
+    if (!inserted) {
+      for (std::uint32_t k = it->second; k != ~0u; k = next_[k])
+        if (geometry::same_point(points[k], x)) return k;
+      // Distinct points closer than an ulp: chained after the first (the rounded surface
+      // then has a degenerate edge, which the check reports).
+      const auto id = static_cast<std::uint32_t>(points.size());
+      next_.push_back(next_[it->second]);
+      next_[it->second] = id;
+      points.push_back(x);
+      rounded_points.push_back(rounded);
+      return id;
+    }
+    next_.push_back(~0u);
+    points.push_back(x);
+    rounded_points.push_back(rounded);
+    return it->second;
+  }
+
+ private:
+  std::unordered_map<Vec3, std::uint32_t, Vec3Hash, Vec3BitsEqual> first_;
+  std::vector<std::uint32_t> next_;
+};
+
+class AtomTrimmer {
+ public:
+  AtomTrimmer(const AtomPolyhedra& polyhedra, const NeighbourList& neighbours)
+      : polyhedra_(polyhedra), neighbours_(neighbours) {}
+
+  AtomPieces trim(std::uint32_t atom);
+
+ private:
+  void load_neighbours(std::uint32_t atom);
+  // The trace of neighbour face g on face f: adds the points of f ∩ g and, when they span a
+  // segment, the segment. Returns false if they do not meet.
+  bool trace(std::uint32_t n, std::uint32_t g);
+  void add_crossings();
+  void emit(const std::array<std::uint32_t, 3>& local, AtomPieces& out, PointTable& table);
+  void split_and_classify(AtomPieces& out, PointTable& table);
+
+  const AtomPolyhedra& polyhedra_;
+  const NeighbourList& neighbours_;
+  std::uint32_t atom_ = 0;
+  Vec3 centre_;
+  std::vector<Vec3> vertices_;
+  std::vector<Neighbour> nbr_;
+  std::size_t nbr_count_ = 0;
+  // The face being trimmed.
+  std::array<Vec3, 3> f_;
+  std::array<Index, 3> f_index_{};
+  BoundingBox f_box_;
+  FaceWork work_;
+  std::vector<std::uint32_t> explicit_id_;  // per vertex of the atom: id in the atom's table, or ~0u
+  std::size_t crossings_ = 0;
+};
+
+void AtomTrimmer::load_neighbours(std::uint32_t atom) {
+  const auto row = neighbours_.of(atom);
+  if (nbr_.size() < row.size()) nbr_.resize(row.size());
+  nbr_count_ = row.size();
+  BoundingBox mine;
+  const double r = polyhedra_.circumradius(atom);
+  mine.extend(centre_ - Vec3{r, r, r});
+  mine.extend(centre_ + Vec3{r, r, r});
+  for (std::size_t k = 0; k < row.size(); ++k) {
+    Neighbour& n = nbr_[k];
+    n.atom = row[k];
+    n.centre = polyhedra_.centre(n.atom);
+    n.inradius = polyhedra_.inradius(n.atom);
+    n.circumradius = polyhedra_.circumradius(n.atom);
+    n.shape = &polyhedra_.shape(n.atom);
+    polyhedra_.vertices(n.atom, n.vertices);
+    n.box = BoundingBox{};
+    n.lens.clear();
+    n.lens_boxes.clear();
+    for (std::uint32_t g = 0; g < n.shape->unit.faces.size(); ++g) {
+      const auto t = n.face(g);
+      const BoundingBox b = box_of(t[0], t[1], t[2]);
+      n.box.extend(b);
+      if (b.overlaps(mine)) {
+        n.lens.push_back(g);
+        n.lens_boxes.push_back(b);
+      }
+    }
+  }
+}
+
+bool AtomTrimmer::trace(std::uint32_t ni, std::uint32_t g) {
+  using boolean_engine::Where;
+  const Neighbour& n = nbr_[ni];
+  const auto t = n.face(g);
+  std::array<int, 3> sg, sf;
+  for (int m = 0; m < 3; ++m) sg[m] = geometry::orient3d(f_[0], f_[1], f_[2], t[m]);
+  if (sg[0] == sg[1] && sg[1] == sg[2]) {
+    if (sg[0] != 0) return false;
+    // Coplanar: the shared part is settled by the rule on orientations (classify); its
+    // outline comes from the neighbouring faces of g, which cross the plane.
+    work_.plane_kind[ni] = geometry::orient3d(f_[0], f_[1], f_[2], n.centre) < 0 ? Plane::coplanar_same
+                                                                                   : Plane::coplanar_opposite;
+    return true;
+  }
+  for (int k = 0; k < 3; ++k) sf[k] = geometry::orient3d(t[0], t[1], t[2], f_[k]);
+  if (sf[0] == sf[1] && sf[1] == sf[2] && sf[0] != 0) return false;
+
+  std::array<std::uint32_t, 6> found{};
+  int count = 0;
+  auto note = [&](std::uint32_t id) {
+    for (int k = 0; k < count; ++k)
+      if (found[k] == id) return;
+    found[count++] = id;
+  };
+  for (std::uint8_t k = 0; k < 3; ++k) {
+    if (sf[k] == 0 && in_cone(n.centre, t, f_[k]))
+      note(work_.add(ImplicitPoint::explicit_point(f_[k]), {Where::corner, k}, ni));
+    const int k1 = (k + 1) % 3;
+    if (sf[k] * sf[k1] < 0) {
+      // Canonical edge direction (lower vertex first): the same definition from both faces.
+      const bool forward = f_index_[k] < f_index_[k1];
+      const Vec3 &p = forward ? f_[k] : f_[k1], &q = forward ? f_[k1] : f_[k];
+      const ImplicitPoint x = ImplicitPoint::line_plane(p, q, t[0], t[1], t[2]);
+      if (in_cone(n.centre, t, x)) note(work_.add(x, {Where::edge, k}, ni));
+    }
+  }
+  for (int m = 0; m < 3; ++m) {
+    std::array<int, 3> side;
+    if (sg[m] == 0) {
+      for (int k = 0; k < 3; ++k) side[k] = geometry::orient3d(centre_, f_[k], f_[(k + 1) % 3], t[m]);
+      if (side[0] >= 0 && side[1] >= 0 && side[2] >= 0)
+        note(work_.add(ImplicitPoint::explicit_point(t[m]), place_from_sides(side), ni));
+    }
+    const int m1 = (m + 1) % 3;
+    if (sg[m] * sg[m1] < 0) {
+      const Triangle& tri = n.shape->unit.faces[g];
+      const bool forward = tri[m] < tri[m1];
+      const Vec3 &p = forward ? t[m] : t[m1], &q = forward ? t[m1] : t[m];
+      const ImplicitPoint y = ImplicitPoint::line_plane(p, q, f_[0], f_[1], f_[2]);
+      for (int k = 0; k < 3; ++k) side[k] = geometry::orient3d(centre_, f_[k], f_[(k + 1) % 3], y);
+      if (side[0] >= 0 && side[1] >= 0 && side[2] >= 0) note(work_.add(y, place_from_sides(side), ni));
+    }
+  }
+  if (count == 0) return false;
+  if (count >= 2) {
+    // f ∩ g is a segment; with more than two points found on it, its ends are the extremes.
+    std::uint32_t s = found[0], e = found[1];
+    if (count > 2) {
+      std::vector<std::uint32_t> ids(found.begin(), found.begin() + count);
+      const Vec3 a = work_.points[ids[0]].rounded(), b = work_.points[ids[1]].rounded();
+      boolean_engine::sort_along_segment(ids, a, b, work_.points);
+      s = ids.front();
+      e = ids.back();
+    }
+    work_.segments.push_back({s, e, ni, g});
+  }
+  return true;
+}
+
+void AtomTrimmer::add_crossings() {
+  // Two neighbours' traces crossing inside the face: the point where the face's plane and
+  // the two neighbours' planes meet (transversal crossings only; touching ends and overlaps
+  // are points of the other segment, found when the segments are split).
+  const std::size_t count = work_.segments.size();
+  for (std::size_t a = 0; a < count; ++a) {
+    const Segment sa = work_.segments[a];
+    const auto pa = nbr_[sa.neighbour].face(sa.plane);
+    for (std::size_t b = a + 1; b < count; ++b) {
+      const Segment sb = work_.segments[b];
+      if (sb.neighbour == sa.neighbour) continue;
+      const auto pb = nbr_[sb.neighbour].face(sb.plane);
+      const int o1 = geometry::orient3d(pa[0], pa[1], pa[2], work_.points[sb.s]);
+      const int o2 = geometry::orient3d(pa[0], pa[1], pa[2], work_.points[sb.t]);
+      if (o1 * o2 >= 0) continue;
+      const int o3 = geometry::orient3d(pb[0], pb[1], pb[2], work_.points[sa.s]);
+      const int o4 = geometry::orient3d(pb[0], pb[1], pb[2], work_.points[sa.t]);
+      if (o3 * o4 >= 0) continue;
+      const ImplicitPoint x =
+          ImplicitPoint::three_planes({f_[0], f_[1], f_[2], pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]});
+      const std::uint32_t id = work_.add(x, {boolean_engine::Where::interior, 0}, sa.neighbour);
+      work_.add(x, {boolean_engine::Where::interior, 0}, sb.neighbour);
+      (void)id;
+      ++crossings_;
+    }
+  }
+}
+
+void AtomTrimmer::emit(const std::array<std::uint32_t, 3>& local, AtomPieces& out, PointTable& table) {
+  Triangle tri;
+  for (int k = 0; k < 3; ++k) {
+    const ImplicitPoint& x = work_.points[local[k]];
+    tri[k] = table.add(x, x.rounded(), out.points, out.rounded);
+  }
+  out.triangles.push_back(tri);
+}
+
+void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
+  using boolean_engine::Where;
+  auto& w = work_;
+  boolean_engine::FaceToSplit face;
+  face.projection = boolean_engine::face_projection(f_[0], f_[1], f_[2]);
+  std::array<std::uint32_t, 3> corner;
+  for (std::uint8_t k = 0; k < 3; ++k)
+    corner[k] = w.add(ImplicitPoint::explicit_point(f_[k]), {Where::corner, k}, ~0u);
+  std::vector<std::uint32_t> edge_run[3];
+  for (int k = 0; k < 3; ++k) {
+    std::vector<std::uint32_t> inside;
+    for (std::uint32_t p = 0; p < w.points.size(); ++p)
+      if (w.places[p].where == Where::edge && w.places[p].index == k) inside.push_back(p);
+    boolean_engine::sort_along_segment(inside, f_[k], f_[(k + 1) % 3], w.points);
+    edge_run[k].push_back(corner[k]);
+    edge_run[k].insert(edge_run[k].end(), inside.begin(), inside.end());
+    edge_run[k].push_back(corner[(k + 1) % 3]);
+    face.boundary.push_back(corner[k]);
+    face.boundary.insert(face.boundary.end(), inside.begin(), inside.end());
+  }
+  // Interior points on a trace (a point where a neighbour only touches the face's
+  // interior splits nothing).
+  std::vector<std::uint8_t> on_segment(w.points.size(), 0);
+  for (const Segment& s : w.segments) on_segment[s.s] = on_segment[s.t] = 1;
+  for (std::uint32_t p = 0; p < w.points.size(); ++p)
+    if (w.places[p].where == Where::interior && (on_segment[p] || w.on_neighbour[p].size() >= 2))
+      face.interior.push_back(p);
+  std::vector<std::uint32_t> ids = face.boundary;
+  ids.insert(ids.end(), face.interior.begin(), face.interior.end());
+  const boolean_engine::FacePoints points(ids, w.points, face.projection);
+  for (const auto& run : edge_run) face.collinear_sets.push_back(run);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> segments;
+  for (const Segment& s : w.segments)
+    if (s.s != s.t) segments.emplace_back(std::min(s.s, s.t), std::max(s.s, s.t));
+  std::sort(segments.begin(), segments.end());
+  segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+  const auto pieces = boolean_engine::split_segments_at_points(segments, points, face.collinear_sets);
+  for (auto [s, t] : pieces) {
+    bool on_boundary = false;
+    for (const auto& run : edge_run)
+      if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
+        on_boundary = true;
+    if (!on_boundary) face.constraints.emplace_back(std::min(s, t), std::max(s, t));
+  }
+  std::sort(face.constraints.begin(), face.constraints.end());
+  face.constraints.erase(std::unique(face.constraints.begin(), face.constraints.end()), face.constraints.end());
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  if (face.constraints.empty() && face.interior.empty() && face.boundary.size() == 3) {
+    triangles.push_back({corner[0], corner[1], corner[2]});
+  } else {
+    auto clipped = boolean_engine::triangulate_polylines(face, points);
+    triangles = clipped ? std::move(*clipped) : boolean_engine::retriangulate_face(face, points);
+  }
+  // Classify: a piece lies wholly inside or wholly outside each neighbour (no trace
+  // crosses it), and inside a convex polyhedron iff its three corners are.
+  std::vector<std::int8_t> inside(w.points.size() * w.relevant.size(), -1);
+  auto corner_inside = [&](std::uint32_t p, std::size_t r) {
+    std::int8_t& known = inside[p * w.relevant.size() + r];
+    if (known < 0) {
+      const std::uint32_t ni = w.relevant[r];
+      const auto& on = w.on_neighbour[p];
+      known = std::find(on.begin(), on.end(), ni) != on.end() ? 1 : inside_closed(w.points[p], nbr_[ni]);
+    }
+    return known == 1;
+  };
+  for (const auto& tri : triangles) {
+    bool keep = true;
+    for (std::size_t r = 0; r < w.relevant.size() && keep; ++r) {
+      const std::uint32_t ni = w.relevant[r];
+      if (w.plane_kind[ni] == Plane::coplanar_same && nbr_[ni].atom > atom_) continue;
+      if (corner_inside(tri[0], r) && corner_inside(tri[1], r) && corner_inside(tri[2], r)) keep = false;
+    }
+    if (keep) emit(tri, out, table);
+  }
+}
+
+AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
+  AtomPieces out;
+  if (polyhedra_.duplicate(atom)) return out;
+  atom_ = atom;
+  centre_ = polyhedra_.centre(atom);
+  polyhedra_.vertices(atom, vertices_);
+  load_neighbours(atom);
+  if (work_.plane_kind.size() < nbr_count_) work_.plane_kind.resize(nbr_count_);
+  PointTable table;
+  const PolyhedronTemplate& shape = polyhedra_.shape(atom);
+  crossings_ = 0;
+  for (std::uint32_t f = 0; f < shape.unit.faces.size(); ++f) {
+    const Triangle& tri = shape.unit.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      f_index_[k] = tri[k];
+      f_[k] = vertices_[tri[k]];
+    }
+    f_box_ = box_of(f_[0], f_[1], f_[2]);
+    work_.clear();
+    // Cull (§2.2.1): a face whose corners are inside a neighbour's inscribed ball is
+    // inside it (the ball is inside the convex polyhedron).
+    bool dropped = false;
+    for (std::uint32_t ni = 0; ni < nbr_count_ && !dropped; ++ni) {
+      const Neighbour& n = nbr_[ni];
+      if (!f_box_.overlaps(n.box)) continue;
+      bool all_in = true;
+      for (const Vec3& c : f_) {
+        const Vec3 d = c - n.centre;
+        all_in = all_in && dot(d, d) < n.inradius * n.inradius;
+      }
+      if (all_in) dropped = true;
+      else work_.near.push_back(ni);
+    }
+    if (dropped) {
+      ++out.faces_inside;
+      continue;
+    }
+    // Intersect (§2.2.2): the traces of every near neighbour.
+    for (std::uint32_t ni : work_.near) {
+      Neighbour& n = nbr_[ni];
+      work_.plane_kind[ni] = Plane::cuts;
+      bool meets = false;
+      for (std::size_t l = 0; l < n.lens.size(); ++l)
+        if (n.lens_boxes[l].overlaps(f_box_) && trace(ni, n.lens[l])) meets = true;
+      if (meets) {
+        work_.relevant.push_back(ni);
+        continue;
+      }
+      // No face of the neighbour meets f: f is wholly inside or wholly outside it.
+      if (inside_closed(ImplicitPoint::explicit_point(f_[0]), n)) {
+        dropped = true;
+        break;
+      }
+    }
+    if (dropped) {
+      ++out.faces_inside;
+      continue;
+    }
+    if (work_.relevant.empty()) {
+      ++out.faces_whole;
+      std::array<std::uint32_t, 3> local;
+      for (std::uint8_t k = 0; k < 3; ++k)
+        local[k] = work_.add(ImplicitPoint::explicit_point(f_[k]), {boolean_engine::Where::corner, k}, ~0u);
+      emit(local, out, table);
+      continue;
+    }
+    ++out.faces_cut;
+    add_crossings();
+    split_and_classify(out, table);
+  }
+  out.crossings = crossings_;
+  return out;
+}
+
+}  // namespace
+
+OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads) {
+  OnePassResult result;
+  auto start = Clock::now();
+  const AtomPolyhedra polyhedra(atoms, options);
+  const NeighbourList neighbours = find_neighbours(polyhedra);
+  const auto n = static_cast<std::int64_t>(atoms.size());
+  std::vector<AtomPieces> pieces(atoms.size());
+  ParallelExceptions errors;
+#pragma omp parallel num_threads(threads)
+  {
+    AtomTrimmer trimmer(polyhedra, neighbours);
+#pragma omp for schedule(dynamic, 4)
+    for (std::int64_t i = 0; i < n; ++i)
+      errors.run(i, [&] { pieces[i] = trimmer.trim(static_cast<std::uint32_t>(i)); });
+  }
+  errors.rethrow();
+  result.stats.seconds_trim = seconds_since(start);
+
+  // Join: atoms in index order, points merged by exact value.
+  start = Clock::now();
+  Mesh& mesh = result.mesh;
+  std::vector<ImplicitPoint> points;
+  PointTable table;
+  std::vector<std::uint32_t> global;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    AtomPieces& p = pieces[i];
+    result.stats.faces_inside += p.faces_inside;
+    result.stats.faces_whole += p.faces_whole;
+    result.stats.faces_cut += p.faces_cut;
+    result.stats.crossings += p.crossings;
+    global.resize(p.points.size());
+    for (std::size_t k = 0; k < p.points.size(); ++k) global[k] = table.add(p.points[k], p.rounded[k], points, mesh.vertices);
+    for (const Triangle& t : p.triangles) {
+      mesh.faces.push_back({global[t[0]], global[t[1]], global[t[2]]});
+      mesh.face_tags.push_back(static_cast<std::int32_t>(i));
+    }
+    p = AtomPieces{};
+  }
+  // Closed: every directed edge has its reverse.
+  std::vector<std::uint64_t> directed;
+  directed.reserve(mesh.faces.size() * 3);
+  for (const Triangle& t : mesh.faces)
+    for (int k = 0; k < 3; ++k) directed.push_back(std::uint64_t(t[k]) << 32 | t[(k + 1) % 3]);
+  std::sort(directed.begin(), directed.end());
+  for (std::uint64_t e : directed) {
+    const std::uint64_t reverse = (e << 32) | (e >> 32);
+    if (!std::binary_search(directed.begin(), directed.end(), reverse)) ++result.stats.open_edges;
+  }
+  result.stats.seconds_join = seconds_since(start);
+  result.stats.atoms = atoms.size();
+  result.stats.duplicate_atoms = polyhedra.duplicates();
+  result.stats.neighbour_pairs = neighbours.atoms.size() / 2;
+  result.stats.faces_in = polyhedra.face_count();
+  return result;
+}
+
+}  // namespace molsurf::surface_detail
