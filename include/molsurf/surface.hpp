@@ -5,6 +5,7 @@
 #include <map>
 #include <functional>
 #include <span>
+#include <string>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/boolean.hpp"
@@ -35,18 +36,30 @@ struct SpherePlan {
 };
 SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& options);
 
-// The solvent-accessible surface: the union of all atoms' spheres, by hierarchical pairwise
-// mesh union. The merge tree is a k-d tree over the atom centres: each node's atoms are
+// The solvent-accessible surface: the union of all atoms' spheres. By default in one pass
+// (src/surface/one_pass_union.hpp); if that result is not closed (never seen; it would be
+// a bug), the pairwise method is run instead and `fallback` says why. The pairwise method:
+// hierarchical pairwise mesh union. The merge tree is a k-d tree over the atom centres: each node's atoms are
 // split by a plane across their longest extent, so two merged halves meet only in a slab
 // around that plane, and a merge costs in proportion to that slab (the Boolean only works
 // on faces in the overlap of the operands' boxes). Each level of the tree joins
 // consecutive pairs of the level below, the merges of a level in parallel (OpenMP), and a
 // merge frees its operands. Spheres are built when their first merge runs. The result
 // does not depend on the number of threads.
+// How the spheres are joined. Both give the same surface up to its triangulation (area and
+// volume agree to rounding; tests/test_surface_methods.cpp).
+enum class SurfaceMethod {
+  one_pass,  // every atom's faces trimmed by its neighbours, all atoms in parallel (default)
+  pairwise,  // hierarchical pairwise union along a k-d tree (the paper's formulation; reference)
+};
+const char* surface_method_name(SurfaceMethod method);
+
 struct SurfaceOptions {
   SphereOptions spheres;
+  SurfaceMethod method = SurfaceMethod::one_pass;
   int threads = 0;  // 0: all cores
-  // Called after each level with (merges done, merges in all); may be empty.
+  // Called from one thread as the work advances: (atoms trimmed, atoms) for the one-pass
+  // method, (merges done, merges in all) after each level for the pairwise one; may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
@@ -72,8 +85,25 @@ struct SurfaceLevel {
   SurfaceLevel& operator+=(const SurfaceLevel& other);
 };
 
+// The one-pass method's counts: where the faces of all polyhedra went.
+struct OnePassStats {
+  std::size_t atoms = 0, duplicate_atoms = 0, neighbour_pairs = 0;
+  std::size_t faces_in = 0;       // all polyhedra's faces
+  std::size_t faces_inside = 0;   // dropped whole (inside a neighbour)
+  std::size_t faces_whole = 0;    // kept whole (reached by no neighbour)
+  std::size_t faces_cut = 0;      // re-triangulated
+  std::size_t crossings = 0;      // three-plane points (two traces crossing inside a face)
+  std::size_t merged_points = 0;  // equal points with different definitions, merged by value
+  std::size_t open_edges = 0;     // directed edges without a reverse after the join (0: closed)
+  double seconds_trim = 0, seconds_join = 0;
+};
+
 struct SurfaceResult {
   Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
+  SurfaceMethod method = SurfaceMethod::one_pass;  // the method that made `mesh`
+  // Why the one-pass result was replaced by the pairwise one (empty: it was not).
+  std::string fallback;
+  OnePassStats one_pass;
   std::size_t merges = 0, levels = 0;
   std::vector<SurfaceLevel> level_stats;  // bottom (sphere pairs) first
   // Levels below this height were merged subtree by subtree (each depth first, one per

@@ -17,6 +17,7 @@ struct SurfaceCommand {
   std::string chains;
   SphereOptions spheres;
   int threads = 0;
+  std::string method = "one-pass";
   bool outer_only = false;
   bool skip_check = false;
   bool skip_cleanup = false;

@@ -79,6 +79,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
                "Skip the exact self-intersection test of the surface before it is written (closed and\n"
                "manifold are still checked); by default a surface that fails is not written")
       ->group(output_group);
+  app.add_option("--method", method,
+                 "How the spheres are joined: one-pass (each atom trimmed by its neighbours, all atoms in\n"
+                 "parallel) or pairwise (hierarchical pairwise union, the paper's formulation; the reference)")
+      ->check(CLI::IsMember({"one-pass", "pairwise"}))
+      ->capture_default_str();
   app.add_option("--threads", threads, "Threads for the union (default: all cores); the result does not depend on it")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
@@ -96,7 +101,7 @@ class ProgressBar {
   void update(std::size_t done, std::size_t total) {
     if (!enabled_ || total == 0) return;
     const int width = 30, filled = static_cast<int>(width * done / total);
-    std::fprintf(stderr, "\runion  [%s%s] %zu/%zu merges", std::string(filled, '#').c_str(),
+    std::fprintf(stderr, "\rsurface [%s%s] %zu/%zu", std::string(filled, '#').c_str(),
                  std::string(width - filled, '.').c_str(), done, total);
     std::fflush(stderr);
     drawn_ = true;
@@ -135,25 +140,38 @@ int SurfaceCommand::run() const {
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
   if (!quiet) std::cout << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 
-  clock = std::chrono::steady_clock::now();
-  ProgressBar bar(!quiet);
   SurfaceOptions surface_options;
   surface_options.spheres = spheres;
   surface_options.threads = threads;
-  surface_options.progress = [&](std::size_t done, std::size_t total) { bar.update(done, total); };
-  SurfaceResult sas = solvent_accessible_surface(s.atoms, surface_options);
-  Mesh surface = outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
-  report.seconds.surface = seconds_since(clock);
-  clock = std::chrono::steady_clock::now();
+  surface_options.method = method == "pairwise" ? SurfaceMethod::pairwise : SurfaceMethod::one_pass;
   std::optional<CleanupStats> cleanup;
-  if (!skip_cleanup) cleanup = improve_surface(surface);
-  report.seconds.cleanup = seconds_since(clock);
-
-  clock = std::chrono::steady_clock::now();
   MeshCheckOptions check_options;
   check_options.self_intersections = !skip_check;
-  const MeshCheck check = check_mesh(surface, check_options);
-  report.seconds.check = seconds_since(clock);
+  auto compute = [&](SurfaceMethod chosen) {
+    surface_options.method = chosen;
+    auto clock = std::chrono::steady_clock::now();
+    ProgressBar bar(!quiet);
+    surface_options.progress = [&](std::size_t done, std::size_t total) { bar.update(done, total); };
+    SurfaceResult sas = solvent_accessible_surface(s.atoms, surface_options);
+    if (!sas.fallback.empty() && !quiet) std::cerr << "molsurf: note: " << sas.fallback << "\n";
+    Mesh mesh = outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
+    report.seconds.surface += seconds_since(clock);
+    clock = std::chrono::steady_clock::now();
+    cleanup.reset();
+    if (!skip_cleanup) cleanup = improve_surface(mesh);
+    report.seconds.cleanup += seconds_since(clock);
+    clock = std::chrono::steady_clock::now();
+    MeshCheck verdict = check_mesh(mesh, check_options);
+    report.seconds.check += seconds_since(clock);
+    return std::pair{std::move(mesh), std::move(verdict)};
+  };
+  auto [surface, check] = compute(surface_options.method);
+  if (!check.valid() && surface_options.method == SurfaceMethod::one_pass) {
+    // The one-pass surface rounded to doubles can fail where the pairwise one, which
+    // repairs rounding between merges, does not: the reference method is the fallback.
+    if (!quiet) std::cerr << "molsurf: note: the one-pass surface failed its check; using the pairwise union\n";
+    std::tie(surface, check) = compute(SurfaceMethod::pairwise);
+  }
   if (!check.valid()) {
     // The promise is a valid surface or none: nothing is written.
     std::string why;

@@ -33,6 +33,7 @@ PolyhedronTemplate make_template(int frequency) {
     const Vec3 &p = t.unit.vertices[c[0]], &q = t.unit.vertices[c[1]], &r = t.unit.vertices[c[2]];
     const Vec3 n = cross(q - p, r - p);
     inradius = std::min(inradius, dot(n, p) / std::sqrt(dot(n, n)));
+    for (const Vec3& e : {q - p, r - q, p - r}) t.max_edge = std::max(t.max_edge, std::sqrt(dot(e, e)) * (1 + 1e-9));
   }
   t.inradius = inradius;
   return t;

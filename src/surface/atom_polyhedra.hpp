@@ -21,6 +21,7 @@ struct PolyhedronTemplate {
   std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k runs from corner k to k + 1
   double area = 0;                                 // of the unit polyhedron
   double inradius = 0;  // a lower bound on every face plane's distance from the centre
+  double max_edge = 0;  // an upper bound on every edge's length
 };
 
 class AtomPolyhedra {

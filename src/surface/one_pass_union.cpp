@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <unordered_map>
@@ -99,6 +101,32 @@ bool inside_closed(const ImplicitPoint& x, const Neighbour& n) {
   throw std::logic_error("one-pass union: a point in no face's cone");
 }
 
+// Points are merged by definition: the same kind and the same defining doubles (edges in
+// canonical order, three-plane points with their planes sorted) are the same point, so
+// the faces and atoms that meet at a point find it without arithmetic. Points that are
+// equal with different definitions (degenerate contacts) are merged after the join by
+// exact value.
+struct DefinitionHash {
+  std::size_t operator()(const ImplicitPoint& p) const {
+    std::uint64_t h = static_cast<std::uint64_t>(p.kind());
+    for (double x : p.defining_values()) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+bool same_definition(const ImplicitPoint& a, const ImplicitPoint& b) {
+  if (a.kind() != b.kind()) return false;
+  const auto x = a.defining_values(), y = b.defining_values();
+  return std::memcmp(x.data(), y.data(), x.size_bytes()) == 0;
+}
+struct DefinitionEqual {
+  bool operator()(const ImplicitPoint& a, const ImplicitPoint& b) const { return same_definition(a, b); }
+};
+
 enum class Plane : std::uint8_t { cuts, coplanar_same, coplanar_opposite };
 
 // Where a point lies on the face being trimmed: corner k, inside edge k (corner k to
@@ -137,7 +165,7 @@ struct FaceWork {
   // The id of x, merged with an equal point already there.
   std::uint32_t add(const ImplicitPoint& x, Place place, std::uint32_t neighbour) {
     for (std::uint32_t k = 0; k < points.size(); ++k)
-      if (geometry::same_point(points[k], x)) {
+      if (same_definition(points[k], x) || geometry::same_point(points[k], x)) {
         // The simplest place wins (a corner over an edge over the interior).
         if (place.where < places[k].where) places[k] = place;
         auto& on = on_neighbour[k];
@@ -168,55 +196,20 @@ Place place_from_sides(const std::array<int, 3>& side) {
 // The output of one atom: its kept pieces, with points merged by exact value.
 struct AtomPieces {
   std::vector<ImplicitPoint> points;
-  std::vector<Vec3> rounded;
   std::vector<Triangle> triangles;
   std::size_t faces_inside = 0, faces_whole = 0, faces_cut = 0, crossings = 0;
 };
 
-struct Vec3Hash {
-  std::size_t operator()(const Vec3& v) const {
-    std::uint64_t h = 0;
-    for (double x : {v.x, v.y, v.z}) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &x, sizeof bits);
-      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
-      h ^= h >> 31;
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
-struct Vec3BitsEqual {
-  bool operator()(const Vec3& a, const Vec3& b) const { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
-};
-
-// Points merged by exact value. Rounding (truncation of the exact value) is a function
-// of the value alone, so equal points have equal rounded coordinates: those are the hash.
 class PointTable {
  public:
-  std::uint32_t add(const ImplicitPoint& x, const Vec3& rounded, std::vector<ImplicitPoint>& points,
-                    std::vector<Vec3>& rounded_points) {
-    auto [it, inserted] = first_.try_emplace(rounded, static_cast<std::uint32_t>(points.size()));
-    if (!inserted) {
-      for (std::uint32_t k = it->second; k != ~0u; k = next_[k])
-        if (geometry::same_point(points[k], x)) return k;
-      // Distinct points closer than an ulp: chained after the first (the rounded surface
-      // then has a degenerate edge, which the check reports).
-      const auto id = static_cast<std::uint32_t>(points.size());
-      next_.push_back(next_[it->second]);
-      next_[it->second] = id;
-      points.push_back(x);
-      rounded_points.push_back(rounded);
-      return id;
-    }
-    next_.push_back(~0u);
-    points.push_back(x);
-    rounded_points.push_back(rounded);
+  std::uint32_t add(const ImplicitPoint& x, std::vector<ImplicitPoint>& points) {
+    auto [it, inserted] = ids_.try_emplace(x, static_cast<std::uint32_t>(points.size()));
+    if (inserted) points.push_back(x);
     return it->second;
   }
 
  private:
-  std::unordered_map<Vec3, std::uint32_t, Vec3Hash, Vec3BitsEqual> first_;
-  std::vector<std::uint32_t> next_;
+  std::unordered_map<ImplicitPoint, std::uint32_t, DefinitionHash, DefinitionEqual> ids_;
 };
 
 class AtomTrimmer {
@@ -247,8 +240,9 @@ class AtomTrimmer {
   std::array<Index, 3> f_index_{};
   BoundingBox f_box_;
   FaceWork work_;
-  std::vector<std::uint32_t> explicit_id_;  // per vertex of the atom: id in the atom's table, or ~0u
+  std::vector<std::uint8_t> near_vertex_;
   std::size_t crossings_ = 0;
+  std::uint32_t last_culler_ = ~0u;
 };
 
 void AtomTrimmer::load_neighbours(std::uint32_t atom) {
@@ -268,12 +262,25 @@ void AtomTrimmer::load_neighbours(std::uint32_t atom) {
     n.shape = &polyhedra_.shape(n.atom);
     polyhedra_.vertices(n.atom, n.vertices);
     n.box = BoundingBox{};
+    n.box.extend(n.centre - Vec3{n.circumradius, n.circumradius, n.circumradius});
+    n.box.extend(n.centre + Vec3{n.circumradius, n.circumradius, n.circumradius});
     n.lens.clear();
     n.lens_boxes.clear();
-    for (std::uint32_t g = 0; g < n.shape->unit.faces.size(); ++g) {
+    // A face can reach this atom only if its vertex nearest to this centre is within
+    // reach (faces are small): test vertices first, then the faces around them.
+    const double reach = r * (1 + 1e-9);
+    const auto& faces = n.shape->unit.faces;
+    near_vertex_.assign(n.vertices.size(), 0);
+    const double slack = n.circumradius * n.shape->max_edge;  // a face is within an edge of each vertex
+    const double limit = (reach + slack) * (reach + slack);
+    for (std::size_t v = 0; v < n.vertices.size(); ++v) {
+      const Vec3 d = n.vertices[v] - centre_;
+      near_vertex_[v] = dot(d, d) <= limit;
+    }
+    for (std::uint32_t g = 0; g < faces.size(); ++g) {
+      if (!near_vertex_[faces[g][0]] && !near_vertex_[faces[g][1]] && !near_vertex_[faces[g][2]]) continue;
       const auto t = n.face(g);
       const BoundingBox b = box_of(t[0], t[1], t[2]);
-      n.box.extend(b);
       if (b.overlaps(mine)) {
         n.lens.push_back(g);
         n.lens_boxes.push_back(b);
@@ -369,8 +376,14 @@ void AtomTrimmer::add_crossings() {
       const int o3 = geometry::orient3d(pb[0], pb[1], pb[2], work_.points[sa.s]);
       const int o4 = geometry::orient3d(pb[0], pb[1], pb[2], work_.points[sa.t]);
       if (o3 * o4 >= 0) continue;
-      const ImplicitPoint x =
-          ImplicitPoint::three_planes({f_[0], f_[1], f_[2], pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]});
+      // Planes in a canonical order, so every face that meets the point defines it alike.
+      std::array<std::array<Vec3, 3>, 3> planes{f_, pa, pb};
+      std::sort(planes.begin(), planes.end(), [](const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y) {
+        return std::memcmp(x.data(), y.data(), sizeof x) < 0;
+      });
+      const ImplicitPoint x = ImplicitPoint::three_planes({planes[0][0], planes[0][1], planes[0][2], planes[1][0],
+                                                           planes[1][1], planes[1][2], planes[2][0], planes[2][1],
+                                                           planes[2][2]});
       const std::uint32_t id = work_.add(x, {boolean_engine::Where::interior, 0}, sa.neighbour);
       work_.add(x, {boolean_engine::Where::interior, 0}, sb.neighbour);
       (void)id;
@@ -383,7 +396,7 @@ void AtomTrimmer::emit(const std::array<std::uint32_t, 3>& local, AtomPieces& ou
   Triangle tri;
   for (int k = 0; k < 3; ++k) {
     const ImplicitPoint& x = work_.points[local[k]];
-    tri[k] = table.add(x, x.rounded(), out.points, out.rounded);
+    tri[k] = table.add(x, out.points);
   }
   out.triangles.push_back(tri);
 }
@@ -475,6 +488,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   PointTable table;
   const PolyhedronTemplate& shape = polyhedra_.shape(atom);
   crossings_ = 0;
+  last_culler_ = ~0u;
   for (std::uint32_t f = 0; f < shape.unit.faces.size(); ++f) {
     const Triangle& tri = shape.unit.faces[f];
     for (int k = 0; k < 3; ++k) {
@@ -485,17 +499,26 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
     work_.clear();
     // Cull (§2.2.1): a face whose corners are inside a neighbour's inscribed ball is
     // inside it (the ball is inside the convex polyhedron).
+    // The neighbour that dropped the last face is tried first: neighbouring faces (the
+    // template's order) are usually inside the same atom.
     bool dropped = false;
-    for (std::uint32_t ni = 0; ni < nbr_count_ && !dropped; ++ni) {
-      const Neighbour& n = nbr_[ni];
-      if (!f_box_.overlaps(n.box)) continue;
-      bool all_in = true;
+    auto deep_inside = [&](const Neighbour& n) {
+      if (!f_box_.overlaps(n.box)) return false;
       for (const Vec3& c : f_) {
         const Vec3 d = c - n.centre;
-        all_in = all_in && dot(d, d) < n.inradius * n.inradius;
+        if (!(dot(d, d) < n.inradius * n.inradius)) return false;
       }
-      if (all_in) dropped = true;
-      else work_.near.push_back(ni);
+      return true;
+    };
+    if (last_culler_ < nbr_count_ && deep_inside(nbr_[last_culler_])) dropped = true;
+    for (std::uint32_t ni = 0; ni < nbr_count_ && !dropped; ++ni) {
+      if (!f_box_.overlaps(nbr_[ni].box)) continue;
+      if (deep_inside(nbr_[ni])) {
+        dropped = true;
+        last_culler_ = ni;
+      } else {
+        work_.near.push_back(ni);
+      }
     }
     if (dropped) {
       ++out.faces_inside;
@@ -538,9 +561,23 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   return out;
 }
 
+// The double coordinates written out: the filter box's midpoint when the box is a few
+// ulps wide (within about an ulp of the exact value), the exact value truncated otherwise.
+Vec3 output_coordinates(const ImplicitPoint& p) {
+  if (p.is_explicit()) return p.explicit_value();
+  Vec3 mid{p.coordinate(0).mid(), p.coordinate(1).mid(), p.coordinate(2).mid()};
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& i = p.coordinate(axis);
+    if (!(i.hi - i.lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(i.lo), std::fabs(i.hi))))
+      return p.rounded();
+  }
+  return mid;
+}
+
 }  // namespace
 
-OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads) {
+OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
+                             const std::function<void(std::size_t, std::size_t)>& progress) {
   OnePassResult result;
   auto start = Clock::now();
   const AtomPolyhedra polyhedra(atoms, options);
@@ -548,17 +585,24 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   const auto n = static_cast<std::int64_t>(atoms.size());
   std::vector<AtomPieces> pieces(atoms.size());
   ParallelExceptions errors;
+  std::atomic<std::size_t> done{0};
 #pragma omp parallel num_threads(threads)
   {
     AtomTrimmer trimmer(polyhedra, neighbours);
 #pragma omp for schedule(dynamic, 4)
-    for (std::int64_t i = 0; i < n; ++i)
+    for (std::int64_t i = 0; i < n; ++i) {
       errors.run(i, [&] { pieces[i] = trimmer.trim(static_cast<std::uint32_t>(i)); });
+      const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
+      if (progress && omp_get_thread_num() == 0 && finished % 256 == 0) progress(finished, atoms.size());
+    }
   }
   errors.rethrow();
+  if (progress) progress(atoms.size(), atoms.size());
   result.stats.seconds_trim = seconds_since(start);
 
-  // Join: atoms in index order, points merged by exact value.
+  // Join: atoms in index order, points merged by definition, then points equal by exact
+  // value but defined differently (degenerate contacts) merged too: only points whose
+  // filter boxes overlap are compared exactly.
   start = Clock::now();
   Mesh& mesh = result.mesh;
   std::vector<ImplicitPoint> points;
@@ -571,13 +615,44 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     result.stats.faces_cut += p.faces_cut;
     result.stats.crossings += p.crossings;
     global.resize(p.points.size());
-    for (std::size_t k = 0; k < p.points.size(); ++k) global[k] = table.add(p.points[k], p.rounded[k], points, mesh.vertices);
+    for (std::size_t k = 0; k < p.points.size(); ++k) global[k] = table.add(p.points[k], points);
     for (const Triangle& t : p.triangles) {
       mesh.faces.push_back({global[t[0]], global[t[1]], global[t[2]]});
       mesh.face_tags.push_back(static_cast<std::int32_t>(i));
     }
     p = AtomPieces{};
   }
+  std::vector<std::uint32_t> order(points.size()), same(points.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::iota(same.begin(), same.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const double la = points[a].coordinate(0).lo, lb = points[b].coordinate(0).lo;
+    return la != lb ? la < lb : a < b;
+  });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const ImplicitPoint& a = points[order[k]];
+    for (std::size_t l = k + 1; l < order.size() && points[order[l]].coordinate(0).lo <= a.coordinate(0).hi; ++l) {
+      const std::uint32_t x = std::min(order[k], order[l]), y = std::max(order[k], order[l]);
+      if (same[y] != y || !geometry::same_point(a, points[order[l]])) continue;
+      std::uint32_t root = x;
+      while (same[root] != root) root = same[root];
+      same[y] = root;
+    }
+  }
+  std::vector<std::uint32_t> vertex_of(points.size());
+  for (std::uint32_t p = 0; p < points.size(); ++p) {
+    std::uint32_t root = p;
+    while (same[root] != root) root = same[root];
+    if (root == p) {
+      vertex_of[p] = static_cast<std::uint32_t>(mesh.vertices.size());
+      mesh.vertices.push_back(output_coordinates(points[p]));
+    } else {
+      vertex_of[p] = vertex_of[root];
+    }
+  }
+  for (Triangle& t : mesh.faces)
+    for (Index& v : t) v = vertex_of[v];
+  result.stats.merged_points = points.size() - mesh.vertices.size();
   // Closed: every directed edge has its reverse.
   std::vector<std::uint64_t> directed;
   directed.reserve(mesh.faces.size() * 3);

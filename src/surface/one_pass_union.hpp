@@ -16,6 +16,7 @@
 // atom lies in the plane of another's with the same orientation, the lower index keeps
 // the shared part; with opposite orientations (solids face to face) both go.
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -25,22 +26,13 @@
 
 namespace molsurf::surface_detail {
 
-struct OnePassStats {
-  std::size_t atoms = 0, duplicate_atoms = 0, neighbour_pairs = 0;
-  std::size_t faces_in = 0;       // all polyhedra's faces
-  std::size_t faces_inside = 0;   // dropped whole (inside a neighbour)
-  std::size_t faces_whole = 0;    // kept whole (reached by no neighbour)
-  std::size_t faces_cut = 0;      // re-triangulated
-  std::size_t crossings = 0;      // three-plane points (two traces crossing inside a face)
-  std::size_t open_edges = 0;     // directed edges without a reverse after the join (0: closed)
-  double seconds_trim = 0, seconds_join = 0;
-};
-
 struct OnePassResult {
   Mesh mesh;  // face tags: atom index
   OnePassStats stats;
 };
 
-OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads);
+// `progress` (may be empty) is called from one thread with (atoms done, atoms in all).
+OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
+                             const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 }  // namespace molsurf::surface_detail

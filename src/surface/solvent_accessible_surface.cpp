@@ -1,5 +1,7 @@
 #include <omp.h>
 
+#include "surface/one_pass_union.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -135,12 +137,30 @@ class MergeTree {
 
 }  // namespace
 
+const char* surface_method_name(SurfaceMethod method) {
+  return method == SurfaceMethod::one_pass ? "one-pass" : "pairwise";
+}
+
 SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SurfaceResult result;
   if (atoms.empty()) return result;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const ThreadCountScope thread_count(threads);
+  if (options.method == SurfaceMethod::one_pass) {
+    surface_detail::OnePassResult one_pass = surface_detail::one_pass_union(atoms, options.spheres, threads, options.progress);
+    result.one_pass = one_pass.stats;
+    if (one_pass.stats.open_edges == 0) {
+      result.mesh = std::move(one_pass.mesh);
+      result.method = SurfaceMethod::one_pass;
+      result.seconds.union_levels = result.seconds.total =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return result;
+    }
+    result.fallback = "the one-pass union left " + std::to_string(one_pass.stats.open_edges) +
+                      " open edges (a molsurf bug; please report it): the pairwise union was used";
+  }
+  result.method = SurfaceMethod::pairwise;
 
   const std::vector<std::uint32_t> order = spatial_order(atoms);
   std::size_t height = 0;  // of the whole tree
