@@ -1,5 +1,6 @@
 #include <omp.h>
 
+#include "surface/atom_polyhedra.hpp"
 #include "surface/one_pass_union.hpp"
 
 #include <algorithm>
@@ -162,7 +163,13 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   }
   result.method = SurfaceMethod::pairwise;
 
-  const std::vector<std::uint32_t> order = spatial_order(atoms);
+  // Identical atoms add nothing to the union (the lowest index stands for all, as in the
+  // one-pass method); merging copies only multiplies coincident faces.
+  std::vector<std::uint32_t> order = spatial_order(atoms);
+  {
+    const surface_detail::AtomPolyhedra polyhedra(atoms, options.spheres);
+    std::erase_if(order, [&](std::uint32_t a) { return polyhedra.duplicate(a); });
+  }
   std::size_t height = 0;  // of the whole tree
   while ((std::size_t{1} << height) < order.size()) ++height;
   const MergeTree tree(atoms, order, options.spheres);

@@ -1,0 +1,146 @@
+// The one-pass union against the pairwise union: small structures at every density and
+// probe, and the families of degenerate placements (grids, equal radii, duplicates,
+// tangency, lattices, symmetric shells) that broke the engine before. The large
+// structures run under the `long` label (test_long_surface_methods.cpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/surface.hpp"
+#include "surface_methods.hpp"
+
+namespace molsurf {
+namespace {
+
+const std::string kData = MOLSURF_DATA_DIR;
+
+Atom atom_at(const Vec3& c, double r) {
+  Atom a;
+  a.centre = c;
+  a.radius = r;
+  a.element = "C";
+  return a;
+}
+
+SphereOptions spheres(double probe, double density, int frequency = 0) {
+  SphereOptions o;
+  o.probe = probe;
+  o.density = density;
+  o.frequency = frequency;
+  return o;
+}
+
+class SmallStructure : public ::testing::TestWithParam<std::tuple<std::string, double, double>> {};
+
+TEST_P(SmallStructure, MethodsAgree) {
+  const auto& [name, probe, density] = GetParam();
+  const Structure s = read_structure(kData + "/pdb/" + name);
+  EXPECT_TRUE(testing::methods_agree(s.atoms, spheres(probe, density)));
+}
+
+INSTANTIATE_TEST_SUITE_P(DataPdb, SmallStructure,
+                         ::testing::Combine(::testing::Values("1crn.pdb"), ::testing::Values(0.0, 1.4),
+                                            ::testing::Values(1.0, 2.0, 4.0)));
+
+TEST(SurfaceMethods, ThreadCountChangesNoByte) {
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  SurfaceOptions o;
+  o.threads = 1;
+  const SurfaceResult one = solvent_accessible_surface(s.atoms, o);
+  o.threads = 2;
+  const SurfaceResult two = solvent_accessible_surface(s.atoms, o);
+  ASSERT_EQ(one.method, SurfaceMethod::one_pass);
+  EXPECT_EQ(one.mesh.faces, two.mesh.faces);
+  EXPECT_EQ(one.mesh.face_tags, two.mesh.face_tags);
+  ASSERT_EQ(one.mesh.vertices.size(), two.mesh.vertices.size());
+  for (std::size_t v = 0; v < one.mesh.vertices.size(); ++v) ASSERT_EQ(one.mesh.vertices[v], two.mesh.vertices[v]);
+}
+
+// Two equal atoms on a 0.1 A grid in one plane: the pairwise union crashed on about one
+// placement in 30 (NaN vertices from an unbounded filter box), and offsets along two axes
+// make many faces of the two icospheres exactly or nearly coplanar.
+TEST(SurfaceMethods, TwoEqualAtomsOnAGrid) {
+  for (int i = 0; i <= 6; ++i)
+    for (int j = 0; j <= 6; ++j) {
+      const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.5), atom_at({0.1 * i, 0.1 * j, 0}, 1.5)};
+      EXPECT_TRUE(testing::methods_agree(atoms, spheres(1.4, 2))) << "offset " << 0.1 * i << ", " << 0.1 * j;
+    }
+}
+
+TEST(SurfaceMethods, TwoCarbonsOfTheCrashReport) {
+  const std::vector<Atom> atoms{atom_at({-0.6, -0.5, 0.5}, 1.7), atom_at({-0.5, -0.6, 0.5}, 1.7)};
+  EXPECT_TRUE(testing::methods_agree(atoms, spheres(1.4, 2)));
+  const std::vector<Atom> close{atom_at({0, 0, 0}, 1.5), atom_at({1e-15, 0, 0}, 1.5)};
+  EXPECT_TRUE(testing::methods_agree(close, spheres(1.4, 2)));
+}
+
+TEST(SurfaceMethods, DuplicatesCostNothingAndKeepTheFirst) {
+  std::vector<Atom> atoms(200, atom_at({1, 2, 3}, 1.7));
+  atoms.push_back(atom_at({3, 2, 3}, 1.7));
+  SurfaceOptions o;
+  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  EXPECT_EQ(r.one_pass.duplicate_atoms, 199u);
+  EXPECT_TRUE(testing::valid_surface(r.mesh));
+  for (std::int32_t tag : r.mesh.face_tags) EXPECT_TRUE(tag == 0 || tag == 200) << tag;
+  EXPECT_TRUE(testing::methods_agree(std::span(atoms).subspan(195), o.spheres));
+}
+
+// Spheres whose polyhedra touch or nearly touch: centres at the sum of the circumradii
+// and a hair either side, along the axes and along a diagonal.
+TEST(SurfaceMethods, TouchingSpheres) {
+  const SphereOptions o = spheres(0, 2, 3);
+  for (const Vec3 dir : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}, Vec3{1, 1, 0}})
+    for (double scale : {1 - 1e-12, 1.0, 1 + 1e-12}) {
+      const double d = 2 * 1.5 * scale / std::sqrt(dot(dir, dir));
+      const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.5), atom_at(dir * d, 1.5)};
+      EXPECT_TRUE(testing::methods_agree(atoms, o)) << dir.x << dir.y << dir.z << " " << scale;
+    }
+}
+
+// Atoms on a cubic lattice: equal radii, spacing equal to the radius (many coplanar and
+// coincident features) and to twice the radius (touching), at the coarsest spheres.
+TEST(SurfaceMethods, Lattices) {
+  for (double spacing : {1.5, 3.0, 2.0})
+    for (int frequency : {1, 2}) {
+      std::vector<Atom> atoms;
+      for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y)
+          for (int z = 0; z < 2; ++z) atoms.push_back(atom_at(Vec3{double(x), double(y), double(z)} * spacing, 1.5));
+      SurfaceOptions o;
+      o.spheres = spheres(0, 2, frequency);
+      const SurfaceResult r = solvent_accessible_surface(atoms, o);
+      EXPECT_TRUE(r.fallback.empty()) << r.fallback;
+      EXPECT_TRUE(testing::valid_surface(r.mesh)) << "spacing " << spacing << " n=" << frequency;
+    }
+}
+
+// Six atoms placed symmetrically around a seventh: the symmetric shells of the crash
+// report (every pair of neighbours related by a symmetry of the icosphere or of the grid).
+TEST(SurfaceMethods, SymmetricShells) {
+  for (double d : {1.0, 1.5, 2.9, 3.0})
+    for (double r : {1.2, 1.5}) {
+      std::vector<Atom> atoms{atom_at({0, 0, 0}, r)};
+      for (int axis = 0; axis < 3; ++axis)
+        for (double s : {-1.0, 1.0}) {
+          Vec3 c{0, 0, 0};
+          (axis == 0 ? c.x : axis == 1 ? c.y : c.z) = s * d;
+          atoms.push_back(atom_at(c, r));
+        }
+      EXPECT_TRUE(testing::methods_agree(atoms, spheres(1.4, 2))) << "d " << d << " r " << r;
+    }
+}
+
+TEST(SurfaceMethods, NestedAtomsLeaveOnlyTheOuter) {
+  const std::vector<Atom> atoms{atom_at({0, 0, 0}, 3.0), atom_at({0.2, 0.1, 0}, 1.0), atom_at({-0.5, 0, 0.3}, 0.5)};
+  SurfaceOptions o;
+  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  for (std::int32_t tag : r.mesh.face_tags) EXPECT_EQ(tag, 0);
+  EXPECT_TRUE(testing::methods_agree(atoms, o.spheres));
+}
+
+}  // namespace
+}  // namespace molsurf
