@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "cli_runner.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
+#include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/shapes.hpp"
 
@@ -76,10 +80,71 @@ TEST(MeshCheck, ValidClosedMeshes) {
   EXPECT_NEAR(check_mesh(cube()).volume, 1.0, 1e-12);
 }
 
-TEST(MeshCheck, EmptyMeshIsValid) {
+// An empty mesh has no defect (a Boolean may be empty: the engine's checks accept it), but
+// it is no surface: the verdict says `empty`, and `molsurf check` fails it.
+TEST(MeshCheck, EmptyMeshHasNoDefectButIsNoSurface) {
   const MeshCheck c = check_mesh(Mesh{});
   EXPECT_TRUE(c.valid());
   EXPECT_TRUE(c.defects().empty());
+  EXPECT_TRUE(c.empty());
+  EXPECT_EQ(c.verdict(), MeshCheck::Verdict::empty);
+  EXPECT_EQ(check_mesh(cube()).verdict(), MeshCheck::Verdict::valid);
+  EXPECT_EQ(check_mesh(flipped(cube())).verdict(), MeshCheck::Verdict::invalid);
+}
+
+// Scaled to 1e300 the area and volume overflow: a surface that cannot be measured is
+// not valid (it was, with NaN measures).
+TEST(MeshCheck, NonFiniteMeasuresAreInvalid) {
+  Mesh m = molsurf::make_icosphere({0, 0, 0}, 1.0, {.frequency = 2});
+  for (Vec3& p : m.vertices) p = 1e300 * p;
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.non_finite_measures);
+  EXPECT_FALSE(c.valid());
+  EXPECT_EQ(c.verdict(), MeshCheck::Verdict::invalid);
+  EXPECT_TRUE(mentions(c, "not finite"));
+  expect_consistent(c);
+}
+
+// A NaN or infinite coordinate (a library caller's mesh; readers refuse them) is a
+// defect, and no exact predicate is asked about it.
+TEST(MeshCheck, NonFiniteCoordinatesAreInvalidWithoutGeometry) {
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh m = cube();
+    m.vertices[3].y = bad;
+    const MeshCheck c = check_mesh(m);
+    EXPECT_EQ(c.non_finite_vertices, 1u);
+    EXPECT_FALSE(c.valid());
+    EXPECT_FALSE(c.self_intersections_checked);
+    EXPECT_TRUE(c.closed());
+    EXPECT_TRUE(mentions(c, "non-finite coordinate"));
+    expect_consistent(c);
+  }
+}
+
+// `molsurf check` on the files of issue 12, item 7: none is called valid.
+TEST(MeshCheckCli, BrokenFilesAreNotValid) {
+  const molsurf::testing::TempDir dir;
+  const auto put = [&](const char* name, const std::string& text) {
+    std::ofstream(dir.path() / name, std::ios::binary) << text;
+  };
+  put("truncated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");  // cut before the faces
+  std::string stl = std::string(80, ' ') + std::string(4, '\0');       // count 0, then a facet
+  stl += std::string(50, '\1');
+  put("zero.stl", stl);
+  put("empty.vert", "");
+  put("empty.face", "");
+  Mesh huge = molsurf::make_icosphere({0, 0, 0}, 1.0, {.frequency = 1});
+  for (Vec3& p : huge.vertices) p = 1e300 * p;
+  molsurf::write_mesh(dir.path() / "huge.off", huge);
+  for (const char* name : {"truncated.obj", "zero.stl", "empty.vert", "huge.off"}) {
+    const auto r = molsurf::testing::run_molsurf(std::string("check ") + name, dir.path());
+    EXPECT_NE(r.exit_code, 0) << name << "\n" << r.out << r.err;
+    EXPECT_EQ(r.out.find("\nVALID:"), std::string::npos) << name << "\n" << r.out;
+  }
+  const auto empty = molsurf::testing::run_molsurf("check truncated.obj", dir.path());
+  EXPECT_NE(empty.out.find("EMPTY: no faces"), std::string::npos) << empty.out;
+  const auto json = molsurf::testing::run_molsurf("check --json truncated.obj", dir.path());
+  EXPECT_NE(json.out.find("\"valid\": false"), std::string::npos) << json.out;
 }
 
 TEST(MeshCheck, HoleIsBoundary) {

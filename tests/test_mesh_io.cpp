@@ -528,13 +528,12 @@ TEST_F(MeshIoTest, EveryTruncationIsHandled) {
   }
 }
 
-// Random byte damage (fixed seed) must give a clean error or a valid mesh. Legacy
-// .vtk is left out: VTK 9.1's own legacy reader can crash on damaged files (we only
-// pre-check its cell lists, the overrun seen most).
+// Random byte damage (fixed seed) must give a clean error or a valid mesh (every format:
+// test_mesh_read_property.cpp).
 TEST_F(MeshIoTest, DamagedFilesAreHandled) {
   const Mesh mesh = tetrahedron();
   std::mt19937 random(12345);
-  for (const char* name : {"d.ply", "d.stl", "d.off", "d.obj", "d.msh", "d.vtp"}) {
+  for (const char* name : {"d.ply", "d.stl", "d.off", "d.obj", "d.msh", "d.vtp", "d.vtk"}) {
     for (bool ascii : {false, true}) {
       write_mesh(dir_ / name, mesh, {.ascii = ascii});
       const std::string bytes = slurp(dir_ / name);
@@ -554,6 +553,151 @@ TEST_F(MeshIoTest, DamagedFilesAreHandled) {
       }
     }
   }
+}
+
+// ---- hostile files (issue 12, item 6): legacy .vtk is read by our own reader --------
+
+TEST_F(MeshIoTest, LegacyVtkNegativePointCountIsAnError) {
+  const fs::path file = dir_ / "negative.vtk";
+  put(file, "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS -12 float\n0 0 0\n");
+  const std::string message = error_of([&] { read_mesh(file); });
+  EXPECT_EQ(message.rfind(file.string() + ":5: negative point count", 0), 0u) << message;
+}
+
+// Counts in the billions in files of a few hundred bytes: an error at once, with no
+// allocation of the declared size (VTK's reader grew memory at 300 MB/s on these).
+TEST_F(MeshIoTest, LegacyVtkHeaderBombsAreErrors) {
+  const std::string head = "# vtk DataFile Version 4.2\nbomb\n";
+  const std::string points = "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  const std::string cases[] = {
+      head + "ASCII\nDATASET POLYDATA\nPOINTS 2000000000 float\n0 0 0 1 1 1\n",
+      head + "BINARY\nDATASET POLYDATA\nPOINTS 2000000000 double\n" + std::string(48, '\0') + "\n",
+      head + "ASCII\nDATASET POLYDATA\n" + points + "POLYGONS 2000000000 2000000000\n3 0 1 2\n",
+      head + "ASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 4\n3 0 1 2\nCELL_DATA 1\nFIELD FieldData 1\n" +
+          "tag 1 2000000000 int\n0\n",
+      head + "ASCII\nDATASET POLYDATA\n" + points + "POLYGONS 1 4\n3 0 1 2\nCELL_DATA 1\nFIELD FieldData 1\n" +
+          "other 2000000000 1 double\n0\n",
+      head + "BINARY\nDATASET POLYDATA\n" + points + "POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nFIELD f 1\n" +
+          "names 1 2000000000 string\n\xc0\xc0\n",
+      head + "ASCII\nDATASET UNSTRUCTURED_GRID\n" + points + "CELLS 1 2000000000\n3 0 1 2\n"};
+  for (const std::string& text : cases) {
+    const fs::path file = dir_ / "bomb.vtk";
+    put(file, text);
+    const std::string message = error_of([&] { read_mesh(file); });
+    EXPECT_EQ(message.rfind(file.string() + ":", 0), 0u) << text << "\n-> " << message;
+  }
+}
+
+TEST_F(MeshIoTest, LegacyVtkDialects) {
+  const std::string head = "# vtk DataFile Version 4.2\nhand made\nASCII\n";
+  const std::string points = "POINTS 4 float\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  struct Case {
+    std::string text;
+    std::size_t faces;
+    std::vector<std::int32_t> tags;
+  };
+  const Case cases[] = {
+      // 4.x cells, a SCALARS tag, a vertex cell first (cell data counts it), lookup table
+      {head + "DATASET POLYDATA\n" + points + "VERTICES 1 2\n1 3\nPOLYGONS 2 9\n3 0 2 1\n4 0 1 3 2\n" +
+           "CELL_DATA 3\nSCALARS tag int 1\nLOOKUP_TABLE default\n9 7 8\nPOINT_DATA 4\nNORMALS n float\n" +
+           "0 0 1 0 0 1 0 0 1 0 0 1\n",
+       3, {7, 8, 8}},
+      // 5.1 layout (OFFSETS, CONNECTIVITY) and a FIELD tag with VTK 9's METADATA block
+      {"# vtk DataFile Version 5.1\nx\nASCII\nDATASET POLYDATA\n" + points +
+           "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 3 6\nCONNECTIVITY vtktypeint64\n0 2 1 0 1 3\n" +
+           "CELL_DATA 2\nFIELD FieldData 1\ntag 1 2 int\n4 5\nMETADATA\nINFORMATION 0\n\n",
+       2, {4, 5}},
+      // unstructured grid: a triangle, a quad, a line (skipped)
+      {head + "DATASET UNSTRUCTURED_GRID\n" + points + "CELLS 3 12\n3 0 2 1\n4 0 1 3 2\n2 0 3\n" +
+           "CELL_TYPES 3\n5\n9\n3\n",
+       3, {}},
+      // a triangle strip
+      {head + "DATASET POLYDATA\n" + points + "TRIANGLE_STRIPS 1 5\n4 0 1 2 3\n", 2, {}}};
+  for (const Case& c : cases) {
+    const fs::path file = dir_ / "dialect.vtk";
+    put(file, c.text);
+    Mesh mesh;
+    ASSERT_NO_THROW(mesh = read_mesh(file)) << c.text;
+    EXPECT_EQ(mesh.vertex_count(), 4u) << c.text;
+    EXPECT_EQ(mesh.face_count(), c.faces) << c.text;
+    EXPECT_EQ(mesh.face_tags, c.tags) << c.text;
+  }
+  put(dir_ / "tetra.vtk", head + "DATASET UNSTRUCTURED_GRID\n" + points + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n");
+  EXPECT_NE(error_of([&] { read_mesh(dir_ / "tetra.vtk"); }).find("cell type 10 is not a surface cell"),
+            std::string::npos);
+}
+
+// The first appended array's header says 2^31 blocks: VTK aborted on it.
+TEST_F(MeshIoTest, VtpDamagedAppendedHeaderIsAnError) {
+  write_mesh(dir_ / "h.vtp", tagged_sphere());
+  std::string bytes = slurp(dir_ / "h.vtp");
+  const std::size_t data = bytes.find('_', bytes.find("<AppendedData")) + 1;
+  ASSERT_NE(data, std::string::npos);
+  bytes.replace(data, 8, std::string("\x00\x00\x00\x80\x00\x00\x00\x00", 8));  // UInt64 block count
+  put(dir_ / "h.vtp", bytes);
+  const std::string message = error_of([&] { read_mesh(dir_ / "h.vtp"); });
+  EXPECT_EQ(message.rfind((dir_ / "h.vtp").string() + ": damaged appended data header", 0), 0u) << message;
+}
+
+TEST_F(MeshIoTest, VtpHugeCountsAreErrors) {
+  write_mesh(dir_ / "n.vtp", tagged_sphere());
+  const std::string bytes = slurp(dir_ / "n.vtp");
+  for (const char* attribute : {"NumberOfPoints=\"", "NumberOfPolys=\""}) {
+    std::string copy = bytes;
+    const std::size_t at = copy.find(attribute) + std::string(attribute).size();
+    copy.replace(at, copy.find('"', at) - at, "2000000000");
+    put(dir_ / "n.vtp", copy);
+    const std::string message = error_of([&] { read_mesh(dir_ / "n.vtp"); });
+    EXPECT_NE(message.find("is more than the file's data can hold"), std::string::npos) << message;
+  }
+}
+
+// VTK's parser reports to the process-wide output window: none of it reaches stderr, the
+// error says it in one line.
+TEST_F(MeshIoTest, VtkChatterStaysOffTheTerminal) {
+  put(dir_ / "x.vtp", "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"1\"");
+  ::testing::internal::CaptureStderr();
+  const std::string message = error_of([&] { read_mesh(dir_ / "x.vtp"); });
+  const std::string chatter = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(chatter, "");
+  EXPECT_EQ(message.rfind((dir_ / "x.vtp").string() + ": ", 0), 0u) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+// ---- data after the declared counts (issue 12, item 7): an error, never dropped -------
+
+TEST_F(MeshIoTest, BinaryStlCountZeroBeforeFacetsIsAnError) {
+  write_mesh(dir_ / "z.stl", tetrahedron());
+  std::string bytes = slurp(dir_ / "z.stl");
+  bytes.replace(80, 4, std::string(4, '\0'));
+  put(dir_ / "z.stl", bytes);
+  const std::string message = error_of([&] { read_mesh(dir_ / "z.stl"); });
+  EXPECT_NE(message.find("binary STL declares 0 faces"), std::string::npos) << message;
+  EXPECT_NE(message.find("4 more faces' worth"), std::string::npos) << message;
+}
+
+TEST_F(MeshIoTest, DataAfterTheDeclaredCountsIsAnError) {
+  write_mesh(dir_ / "a.off", tetrahedron());
+  put(dir_ / "a.off", slurp(dir_ / "a.off") + "3 0 1 2\n");
+  EXPECT_NE(error_of([&] { read_mesh(dir_ / "a.off"); }).find(":11: data after the declared 4 vertices and 4 faces"),
+            std::string::npos)
+      << error_of([&] { read_mesh(dir_ / "a.off"); });
+  for (const bool ascii : {false, true}) {
+    write_mesh(dir_ / "a.ply", tetrahedron(), {.ascii = ascii});
+    put(dir_ / "a.ply", slurp(dir_ / "a.ply") + (ascii ? "3 0 1 2 0\n" : std::string(17, '\1')));
+    EXPECT_NE(error_of([&] { read_mesh(dir_ / "a.ply"); }).find("data after the declared elements"), std::string::npos);
+  }
+  write_mesh(dir_ / "a.stl", tetrahedron(), {.ascii = true});
+  put(dir_ / "a.stl", slurp(dir_ / "a.stl") + "facet normal 0 0 1\n");
+  EXPECT_NE(error_of([&] { read_mesh(dir_ / "a.stl"); }).find("'facet' outside 'solid'"), std::string::npos);
+}
+
+TEST_F(MeshIoTest, EmptyFilesAreErrors) {
+  put(dir_ / "e.obj", "");
+  EXPECT_EQ(error_of([&] { read_mesh(dir_ / "e.obj"); }), (dir_ / "e.obj").string() + ": empty file (0 bytes)");
+  put(dir_ / "e.vert", "");
+  put(dir_ / "e.face", "");
+  EXPECT_EQ(error_of([&] { read_mesh(dir_ / "e.vert"); }), (dir_ / "e.vert").string() + ": empty file (0 bytes)");
 }
 
 TEST_F(MeshIoTest, FormatNames) {

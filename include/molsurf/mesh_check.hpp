@@ -24,6 +24,13 @@ struct MeshCheck {
   std::size_t duplicate_faces = 0;       // same three vertices twice
   std::size_t intersecting_pairs = 0;    // face pairs that cross or overlap
   std::size_t contact_pairs = 0;         // face pairs that only touch, at a point or along a segment
+  // Vertices with a NaN or infinite coordinate: nothing geometric can be decided about
+  // them, so the geometric tests (degenerate faces, self-intersections, orientation) are
+  // then skipped and the mesh is invalid.
+  std::size_t non_finite_vertices = 0;
+  // Area or volume overflowed (finite coordinates near the limits of double, e.g. 1e300):
+  // a surface that cannot be measured is not a valid one.
+  bool non_finite_measures = false;
   bool self_intersections_checked = false;
   std::size_t components = 0;
   std::size_t inward_components = 0;     // outer components with negative volume
@@ -34,11 +41,19 @@ struct MeshCheck {
   std::vector<std::size_t> examples_boundary, examples_nonmanifold_edge, examples_misoriented,
       examples_nonmanifold_vertex, examples_degenerate, examples_intersecting, examples_contact;
 
+  // No faces. An empty mesh has no defect, so valid() holds, but it is no closed surface:
+  // verdict() tells the two apart, and each caller decides. `molsurf check` fails it (a
+  // file that reads as empty is broken, not a surface); a Boolean may legitimately be
+  // empty (the intersection of disjoint solids).
+  bool empty() const { return faces == 0; }
+  enum class Verdict { valid, empty, invalid };
+  Verdict verdict() const { return !valid() ? Verdict::invalid : empty() ? Verdict::empty : Verdict::valid; }
   bool closed() const { return boundary_edges == 0 && nonmanifold_edges == 0; }
   bool manifold() const { return nonmanifold_edges == 0 && nonmanifold_vertices == 0; }
   bool oriented() const { return misoriented_edges == 0; }
-  // Closed, 2-manifold, consistently oriented outward, no degenerate face and no
-  // self-intersection. Contacts (touching without crossing) do not make it invalid.
+  // No defect: closed, 2-manifold, consistently oriented outward, no degenerate face, no
+  // self-intersection, finite coordinates, area and volume. Contacts (touching without
+  // crossing) do not make it invalid. True for an empty mesh: see empty() and verdict().
   bool valid() const;
   // One line per defect found, e.g. "3 boundary edges (a hole): faces 10 11 12".
   std::vector<std::string> defects() const;

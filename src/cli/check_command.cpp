@@ -20,7 +20,7 @@ int CheckCommand::run() const {
   options.self_intersections = !skip_self_intersections;
   const MeshCheck result = check_mesh(m, options);
   std::cout << (json ? mesh_check_json(result, mesh.string()) : format_mesh_check(result, mesh.string()));
-  return result.valid() ? 0 : 1;
+  return result.verdict() == MeshCheck::Verdict::valid ? 0 : 1;  // an empty mesh is no surface
 }
 
 }  // namespace molsurf::cli

@@ -77,6 +77,9 @@ std::string read_file_bytes(const path& file) {
   std::ostringstream content;
   content << in.rdbuf();
   if (in.bad()) fail(file, "cannot read: read error");
+  // No format reads a zero-byte file as a mesh: an empty .obj or .vert/.face would
+  // otherwise pass for an empty surface.
+  if (content.view().empty()) fail(file, "empty file (0 bytes)");
   return std::move(content).str();
 }
 

@@ -78,6 +78,10 @@ Mesh read_off(const path& file) {
       polygon.push_back(parse_integer(fields[static_cast<std::size_t>(i)], file, n, "vertex index"));
     add_polygon(mesh, polygon, mesh.vertices.size(), file, n);
   }
+  // Data past the declared counts means the counts are wrong: refuse rather than drop it.
+  if (next_data_line(lines, fields))
+    lines.fail_here("data after the declared " + std::to_string(vertex_count) + " vertices and " +
+                    std::to_string(face_count) + " faces (wrong counts?)");
   return mesh;
 }
 

@@ -154,15 +154,24 @@ class Body {
     return encoding_ == Encoding::ascii ? read_text(type, value) : read_binary(type, value);
   }
   std::size_t line() const { return encoding_ == Encoding::ascii ? line_ : 0; }
+  // Nothing but blanks (ASCII) or nothing at all (binary) left.
+  bool at_end() {
+    if (encoding_ == Encoding::ascii) skip_blanks();
+    return position_ >= bytes_.size();
+  }
 
  private:
-  bool read_text(Type type, double& value) {
+  void skip_blanks() {
     while (position_ < bytes_.size()) {
       const char c = bytes_[position_];
       if (c == '\n') ++line_;
       if (c != ' ' && c != '\t' && c != '\r' && c != '\n') break;
       ++position_;
     }
+  }
+
+  bool read_text(Type type, double& value) {
+    skip_blanks();
     if (position_ >= bytes_.size()) return false;
     const std::size_t end = bytes_.find_first_of(" \t\r\n", position_);
     const std::string_view token =
@@ -334,6 +343,8 @@ Mesh read_ply(const path& file) {
       }
     }
   }
+  // Data past the declared elements means a wrong count: refuse rather than drop it.
+  if (!body.at_end()) fail(file, body.line(), "data after the declared elements (wrong counts in the header?)");
   return mesh;
 }
 

@@ -77,6 +77,14 @@ Mesh read_binary_stl(const path& file, const std::string& bytes) {
   if (available < facet_count)
     fail(file, "truncated: expected " + std::to_string(facet_count) + " faces, file ends after " +
                    std::to_string(available));
+  // Bytes past the declared facets mean a damaged count (a count of 0 before 20 facets
+  // would otherwise read as an empty surface): refuse rather than drop them.
+  if (const std::size_t extra = bytes.size() - kFirstFacet - facet_count * kFacetSize; extra > 0)
+    fail(file, "binary STL declares " + std::to_string(facet_count) + " faces (" +
+                   std::to_string(kFirstFacet + facet_count * kFacetSize) + " bytes) but the file has " +
+                   std::to_string(extra) + " more bytes" +
+                   (extra >= kFacetSize ? " (" + std::to_string(extra / kFacetSize) + " more faces' worth): damaged count?"
+                                        : ""));
   Mesh mesh;
   VertexMerger merger(mesh);
   mesh.faces.reserve(facet_count);
@@ -99,12 +107,13 @@ Mesh read_ascii_stl(const path& file, std::string bytes) {
   std::string_view line;
   std::vector<Index> corners;
   std::size_t facet_line = 0;
-  bool in_facet = false;
+  bool in_facet = false, in_solid = false;
   while (lines.next(line)) {
     const std::vector<std::string_view> fields = split_fields(line);
     if (fields.empty()) continue;
     const std::size_t n = lines.line_number();
     if (fields[0] == "facet") {
+      if (!in_solid) lines.fail_here("'facet' outside 'solid' ... 'endsolid'");
       if (in_facet) lines.fail_here("'facet' before 'endfacet'");
       in_facet = true;
       facet_line = n;
@@ -125,12 +134,21 @@ Mesh read_ascii_stl(const path& file, std::string bytes) {
       in_facet = false;
     } else if (fields[0] == "endsolid") {
       if (in_facet) lines.fail_here("'endsolid' inside a facet");
-      return mesh;
-    } else if (fields[0] != "solid" && fields[0] != "outer" && fields[0] != "endloop") {
+      if (!in_solid) lines.fail_here("'endsolid' without 'solid'");
+      in_solid = false;
+    } else if (fields[0] == "solid") {
+      // Several solids may follow one another; their facets make one mesh.
+      if (in_solid) lines.fail_here("'solid' before 'endsolid'");
+      in_solid = true;
+    } else if (!in_solid) {
+      lines.fail_here("data after 'endsolid'");
+    } else if (fields[0] != "outer" && fields[0] != "endloop") {
       lines.fail_here("unexpected '" + std::string(fields[0].substr(0, 20)) + "' in ASCII STL");
     }
   }
-  fail(file, lines.line_number(), in_facet ? "truncated: file ends inside a facet" : "truncated: missing 'endsolid'");
+  if (in_solid)
+    fail(file, lines.line_number(), in_facet ? "truncated: file ends inside a facet" : "truncated: missing 'endsolid'");
+  return mesh;
 }
 
 }  // namespace

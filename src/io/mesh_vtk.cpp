@@ -1,5 +1,7 @@
 // VTK PolyData through VTK itself: XML .vtp (binary, zlib-compressed, appended) and
-// legacy .vtk (binary, file version 4.2 so that pre-9.0 readers open it too).
+// legacy .vtk (binary, file version 4.2 so that pre-9.0 readers open it too). Reading .vtp
+// goes through VTK after vtp_guard.cpp has checked its sizes; legacy .vtk is read by our
+// own reader (mesh_vtk_legacy.cpp), since VTK's trusts every count in the file.
 // Stored: double points (exact), area-weighted point normals, cell data "tag" and,
 // when atoms are given, "atom_serial", "residue_number", "residue_name", "chain" of
 // each face's atom. VTK writes to AtomicFile's temporary, never to the target itself.
@@ -10,10 +12,10 @@
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkObject.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
@@ -22,10 +24,10 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <type_traits>
 
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
+#include "io/vtp_guard.hpp"
 #include "molsurf/error.hpp"
 
 namespace molsurf::mesh_io {
@@ -41,6 +43,21 @@ class ErrorCollector : public vtkCommand {
     if (call_data != nullptr && messages.empty()) messages = static_cast<const char*>(call_data);
   }
   std::string messages;
+};
+
+// VTK objects other than the algorithm (the XML parser, the zlib decompressor) report
+// errors to the terminal, through vtkLogger and the output window, unless global warning
+// display is off. While one guard lives it is off (our one-line error says what failed);
+// the previous setting comes back after. Reads and writes are not concurrent.
+class QuietVtkOutput {
+ public:
+  QuietVtkOutput() : previous_(vtkObject::GetGlobalWarningDisplay()) { vtkObject::GlobalWarningDisplayOff(); }
+  ~QuietVtkOutput() { vtkObject::SetGlobalWarningDisplay(previous_); }
+  QuietVtkOutput(const QuietVtkOutput&) = delete;
+  QuietVtkOutput& operator=(const QuietVtkOutput&) = delete;
+
+ private:
+  int previous_;
 };
 
 std::string first_line(std::string text) {
@@ -176,61 +193,11 @@ Mesh from_polydata(const path& file, vtkPolyData* polydata) {
   return mesh;
 }
 
-// VTK 9.1's legacy reader trusts the per-cell counts of a 4.2-format cell section
-// ("POLYGONS n size" then n runs of "k id1 .. idk") and writes past its buffer when a
-// damaged file's counts disagree with `size`. Walk those sections first.
-void check_legacy_cell_sections(const path& file, const std::string& bytes) {
-  // Line 3 says ASCII or BINARY (line 1 is the version, line 2 a free title).
-  const std::size_t first_end = bytes.find('\n');
-  const std::size_t second_end = first_end == std::string::npos ? first_end : bytes.find('\n', first_end + 1);
-  const bool binary = second_end != std::string::npos && bytes.compare(second_end + 1, 6, "BINARY") == 0;
-  for (const char* keyword : {"\nVERTICES ", "\nLINES ", "\nPOLYGONS ", "\nTRIANGLE_STRIPS "}) {
-    for (std::size_t at = bytes.find(keyword); at != std::string::npos; at = bytes.find(keyword, at + 1)) {
-      const std::size_t line_end = bytes.find('\n', at + 1);
-      if (line_end == std::string::npos) fail(file, "truncated cell section");
-      const std::vector<std::string_view> fields =
-          split_fields(std::string_view(bytes).substr(at + 1, line_end - at - 1));
-      if (fields.size() != 3) fail(file, "bad cell section header");
-      const long long cells = parse_integer(fields[1], file, 0, "cell count");
-      const long long size = parse_integer(fields[2], file, 0, "cell list size");
-      if (cells < 0 || size < 0) fail(file, "negative cell count");
-      if (bytes.compare(line_end + 1, 7, "OFFSETS") == 0) continue;  // 5.1 layout: VTK checks offsets itself
-      std::vector<long long> values;
-      if (binary) {
-        if (static_cast<unsigned long long>(size) > (bytes.size() - line_end - 1) / 4)
-          fail(file, "truncated: cell list of " + std::to_string(size) + " values");
-        for (long long i = 0; i < size; ++i) {
-          std::uint32_t word = 0;
-          for (std::size_t b = 0; b < 4; ++b)
-            word = (word << 8) | static_cast<unsigned char>(bytes[line_end + 1 + 4 * static_cast<std::size_t>(i) + b]);
-          values.push_back(static_cast<std::int32_t>(word));
-        }
-      } else {
-        std::size_t position = line_end + 1;
-        for (long long i = 0; i < size; ++i) {
-          position = bytes.find_first_not_of(" \t\r\n", position);
-          if (position == std::string::npos) fail(file, "truncated: cell list of " + std::to_string(size) + " values");
-          const std::size_t end = std::min(bytes.find_first_of(" \t\r\n", position), bytes.size());
-          values.push_back(parse_integer(std::string_view(bytes).substr(position, end - position), file, 0, "cell list"));
-          position = end;
-        }
-      }
-      long long used = 0;
-      for (long long cell = 0; cell < cells; ++cell) {
-        if (used >= size || values[static_cast<std::size_t>(used)] < 0 ||
-            values[static_cast<std::size_t>(used)] > size - used - 1)
-          fail(file, "cell list is inconsistent with its size");
-        used += values[static_cast<std::size_t>(used)] + 1;
-      }
-      if (used != size) fail(file, "cell list is inconsistent with its size");
-    }
-  }
-}
-
 template <class Reader>
 Mesh read_with(vtkNew<Reader>& reader, const path& file) {
   const std::string bytes = read_file_bytes(file);  // a missing file gets our usual message
-  if constexpr (std::is_same_v<Reader, vtkPolyDataReader>) check_legacy_cell_sections(file, bytes);
+  check_vtp_sizes(file, bytes);                       // before VTK allocates what they declare
+  const QuietVtkOutput quiet;
   vtkNew<ErrorCollector> errors;
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->SetFileName(file.c_str());
@@ -270,13 +237,6 @@ void write_vtk(const path& file, const Mesh& mesh, const MeshWriteOptions& optio
 
 Mesh read_vtp(const path& file) {
   vtkNew<vtkXMLPolyDataReader> reader;
-  return read_with(reader, file);
-}
-
-Mesh read_vtk(const path& file) {
-  vtkNew<vtkPolyDataReader> reader;
-  reader->ReadAllScalarsOn();  // not only the active scalars: "tag" is a plain field
-  reader->ReadAllFieldsOn();
   return read_with(reader, file);
 }
 

@@ -168,8 +168,10 @@ std::string format_mesh_check(const MeshCheck& c, const std::string& file) {
   t.row("faces < 5 deg / < 1 deg", std::to_string(q.below_5deg) + " / " + std::to_string(q.below_1deg));
   t.row("max aspect ratio", fixed(q.max_aspect_ratio, 2));
   std::string out = t.str();
-  if (c.valid()) {
-    out += c.faces == 0 ? "VALID: empty surface (no faces)\n" : "VALID: closed, 2-manifold, outward, no self-intersection\n";
+  if (c.verdict() == MeshCheck::Verdict::empty) {
+    out += "EMPTY: no faces, so no closed surface\n";
+  } else if (c.valid()) {
+    out += "VALID: closed, 2-manifold, outward, no self-intersection\n";
   } else {
     out += "INVALID:\n";
     for (const std::string& d : c.defects()) out += "  - " + d + "\n";
@@ -185,7 +187,8 @@ std::string mesh_check_json(const MeshCheck& c, const std::string& file) {
     j.end_array();
   };
   j.begin_object();
-  j.field("file", file).field("valid", c.valid());
+  // "valid" is molsurf check's verdict: an empty mesh is not a valid surface ("empty" says why).
+  j.field("file", file).field("valid", c.verdict() == MeshCheck::Verdict::valid).field("empty", c.empty());
   j.field("vertices", c.vertices).field("faces", c.faces).field("edges", c.edges);
   j.field("unused_vertices", c.unused_vertices).field("components", c.components);
   j.field("euler_characteristic", c.euler_characteristic).field("area", c.area).field("volume", c.volume);
@@ -196,6 +199,7 @@ std::string mesh_check_json(const MeshCheck& c, const std::string& file) {
   j.field("duplicate_faces", c.duplicate_faces);
   j.field("self_intersections_checked", c.self_intersections_checked);
   j.field("intersecting_pairs", c.intersecting_pairs).field("contact_pairs", c.contact_pairs);
+  j.field("non_finite_vertices", c.non_finite_vertices).field("non_finite_measures", c.non_finite_measures);
   j.key("quality").begin_object();
   j.field("min_angle_deg", c.quality.min_angle_deg).field("mean_min_angle_deg", c.quality.mean_min_angle_deg);
   j.field("faces_below_5deg", c.quality.below_5deg).field("faces_below_1deg", c.quality.below_1deg);

@@ -18,11 +18,18 @@
 //    mesh is not closed, ray parity means nothing and the rule falls back to the volume
 //    sign of components that no other component's bounding box contains. The volume sign
 //    itself is a floating-point sum (robust for any solid of non-negligible volume).
-//  - An empty mesh (no faces) is valid: there is nothing wrong with it.
+//  - An empty mesh (no faces) has no defect, so valid() holds; it is still no surface, and
+//    verdict() says `empty` so that each caller decides (`molsurf check` fails it, a Boolean
+//    result may be empty).
+//  - A vertex with a non-finite coordinate is a defect, and then only the topology is
+//    examined: exact predicates cannot take NaN or infinity. Non-finite area or volume
+//    (finite coordinates whose products overflow) is a defect too.
 #include "molsurf/mesh_check.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <cstdint>
@@ -381,13 +388,20 @@ std::string defect_line(std::size_t count, const char* singular, const char* plu
 }  // namespace
 
 bool MeshCheck::valid() const {
-  if (faces == 0) return true;  // an empty mesh has no defect
+  if (non_finite_vertices > 0 || non_finite_measures) return false;
+  if (faces == 0) return true;  // no defect; verdict() says `empty`
   return closed() && manifold() && oriented() && degenerate_faces == 0 && duplicate_faces == 0 &&
          intersecting_pairs == 0 && inward_components == 0;
 }
 
 std::vector<std::string> MeshCheck::defects() const {
   std::vector<std::string> lines;
+  if (non_finite_vertices)
+    lines.push_back(std::to_string(non_finite_vertices) +
+                    (non_finite_vertices == 1 ? " vertex has" : " vertices have") +
+                    " a non-finite coordinate (NaN or infinity): geometry not checked");
+  if (non_finite_measures)
+    lines.push_back("area or volume is not finite (coordinates too large to measure: overflow)");
   if (faces == 0) return lines;
   if (boundary_edges)
     lines.push_back(defect_line(boundary_edges, "boundary edge (a hole)", "boundary edges (holes)", "faces",
@@ -425,13 +439,18 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
   result.faces = mesh.faces.size();
   const std::size_t nf = mesh.faces.size();
 
+  for (const Vec3& p : mesh.vertices)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) ++result.non_finite_vertices;
+  const bool geometric = result.non_finite_vertices == 0;
+
   // topological[f]: the face has three distinct indices; degenerate[f]: exact collinearity too.
   std::vector<std::uint8_t> topological(nf), degenerate(nf);
   const auto nf_signed = static_cast<std::int64_t>(nf);
 #pragma omp parallel for schedule(static)
   for (std::int64_t f = 0; f < nf_signed; ++f) {
     topological[f] = !has_repeated_index(mesh.faces[f]);
-    degenerate[f] = geometry::is_degenerate_face(mesh, static_cast<std::size_t>(f));
+    degenerate[f] = geometric ? geometry::is_degenerate_face(mesh, static_cast<std::size_t>(f))
+                              : !topological[f];
   }
   LowestIndices degenerate_examples(options.max_examples);
   for (std::size_t f = 0; f < nf; ++f)
@@ -444,12 +463,18 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
   check_edges(build_edge_table(mesh, topological), options.max_examples, result);
   check_vertices(mesh, topological, options.max_examples, result);
   result.duplicate_faces = count_duplicate_faces(mesh, topological);
+  result.euler_characteristic = euler_characteristic(mesh);
+  if (!geometric) {
+    result.components = connected_components(mesh).count;
+    result.area = result.volume = std::numeric_limits<double>::quiet_NaN();
+    return result;
+  }
   if (options.self_intersections) check_self_intersections(mesh, degenerate, options.max_examples, result);
   check_components(mesh, result);
 
-  result.euler_characteristic = euler_characteristic(mesh);
   result.area = surface_area(mesh);
   result.volume = signed_volume(mesh);
+  result.non_finite_measures = !std::isfinite(result.area) || !std::isfinite(result.volume);
   result.quality = mesh_quality(mesh);
   return result;
 }
