@@ -22,10 +22,13 @@ inline std::string read_text(const std::filesystem::path& path) {
   return s.str();
 }
 
-// `arguments` is appended to the executable's path as is (quote paths yourself).
-inline CommandResult run_molsurf(const std::string& arguments, const std::filesystem::path& workdir) {
+// `arguments` is appended to the executable's path as is (quote paths yourself);
+// `shell_prefix` runs before it in the same shell (e.g. "ulimit -v 500000; ").
+inline CommandResult run_molsurf(const std::string& arguments, const std::filesystem::path& workdir,
+                                 const std::string& shell_prefix = "") {
   const auto out = workdir / "stdout.txt", err = workdir / "stderr.txt";
-  const std::string command = "cd '" + workdir.string() + "' && '" MOLSURF_CLI_PATH "' " + arguments +
+  const std::string command = "cd '" + workdir.string() + "' && " + shell_prefix + "'" MOLSURF_CLI_PATH "' " +
+                              arguments +
                               " > '" + out.string() + "' 2> '" + err.string() + "' < /dev/null";
   const int status = std::system(command.c_str());
   CommandResult r;

@@ -1,6 +1,8 @@
 // AtomicFile: a target is replaced whole or left alone, and no temporary is left behind.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <stdlib.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/temporary_registry.hpp"
 #include "molsurf/error.hpp"
 
 namespace fs = std::filesystem;
@@ -139,6 +142,99 @@ TEST_F(AtomicFileTest, ReadOnlyDirectoryThrows) {
   EXPECT_THROW(molsurf::write_file_atomically(dir_ / "x", "data"), molsurf::Error);
   fs::permissions(dir_, fs::perms::owner_all);
   EXPECT_EQ(entries(), 0u);
+}
+
+// ---- issue 12, item 4 ----------------------------------------------------------------
+
+TEST_F(AtomicFileTest, SymbolicLinksDevicesAndDirectoriesAreNeverReplaced) {
+  put(dir_ / "real.json", "keep");
+  fs::create_symlink("real.json", dir_ / "link.json");
+  fs::create_symlink("nowhere.json", dir_ / "dangling.json");
+  for (const fs::path& target : {dir_ / "link.json", dir_ / "dangling.json"}) {
+    try {
+      molsurf::write_file_atomically(target, "data");
+      FAIL() << "expected molsurf::Error for " << target;
+    } catch (const molsurf::Error& error) {
+      EXPECT_NE(std::string(error.what()).find("symbolic link"), std::string::npos) << error.what();
+    }
+    EXPECT_TRUE(fs::is_symlink(target));
+  }
+  EXPECT_EQ(slurp(dir_ / "real.json"), "keep");
+  EXPECT_FALSE(fs::exists(dir_ / "nowhere.json"));
+  try {
+    molsurf::write_file_atomically("/dev/null", "data");
+    FAIL() << "expected molsurf::Error for /dev/null";
+  } catch (const molsurf::Error& error) {
+    EXPECT_NE(std::string(error.what()).find("device"), std::string::npos) << error.what();
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_EQ(entries(), 3u);  // no temporary left
+}
+
+TEST_F(AtomicFileTest, ASetReplacesItsTargetsOnlyWhenAllAreComplete) {
+  put(dir_ / "a.vert", "old a");
+  put(dir_ / "a.face", "old b");
+  {
+    molsurf::AtomicFileSet set;
+    set.add(dir_ / "a.vert").write("new a");
+    set.add(dir_ / "a.face");  // a writer that fails before finishing: the set is dropped
+  }
+  EXPECT_EQ(slurp(dir_ / "a.vert"), "old a");
+  EXPECT_EQ(slurp(dir_ / "a.face"), "old b");
+  EXPECT_EQ(entries(), 2u);
+
+  molsurf::AtomicFileSet set;
+  set.add(dir_ / "a.vert").write("new a");
+  set.add(dir_ / "a.face").write("new b");
+  set.add(dir_ / "c.json").write("new c");
+  // The third target turns into a non-empty directory before the commit: the message
+  // says which files were written and which not.
+  fs::create_directories(dir_ / "c.json" / "child");
+  try {
+    set.commit();
+    FAIL() << "expected molsurf::Error";
+  } catch (const molsurf::Error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("c.json: cannot write"), std::string::npos) << message;
+    EXPECT_NE(message.find("already written: " + (dir_ / "a.vert").string() + ", " + (dir_ / "a.face").string()),
+              std::string::npos)
+        << message;
+  }
+}
+
+// A process killed by SIGINT or SIGTERM in the middle of a write leaves no temporary.
+TEST_F(AtomicFileTest, SignalsRemoveTemporaries) {
+  for (int signal_number : {SIGINT, SIGTERM}) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      molsurf::detail::remove_temporaries_on_signals();
+      AtomicFile first(dir_ / "big.vtp");
+      first.write(std::string(1 << 20, 'x'));
+      AtomicFile second(dir_ / "report.json");
+      second.write("half");
+      ::raise(signal_number);
+      ::_exit(0);  // not reached: the signal ends the process
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the signal must still end the process";
+    EXPECT_EQ(WTERMSIG(status), signal_number);
+    EXPECT_EQ(entries(), 0u) << "temporaries left after signal " << signal_number;
+  }
+}
+
+TEST_F(AtomicFileTest, RegistryForgetsCommittedAndRemovedTemporaries) {
+  const int before = molsurf::detail::registered_temporaries();
+  {
+    AtomicFile kept(dir_ / "kept");
+    AtomicFile dropped(dir_ / "dropped");
+    EXPECT_EQ(molsurf::detail::registered_temporaries(), before + 2);
+    kept.write("x");
+    kept.commit();
+    EXPECT_EQ(molsurf::detail::registered_temporaries(), before + 1);
+  }
+  EXPECT_EQ(molsurf::detail::registered_temporaries(), before);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "mesh_fixtures.hpp"
@@ -165,14 +167,15 @@ TEST(Cli, BooleanOfTwoMeshFiles) {
   EXPECT_EQ(check.exit_code, 0) << check.out;
 }
 
-TEST(Cli, BooleanOfDisjointSolidsIsAnEmptyIntersection) {
+TEST(Cli, BooleanOfDisjointSolidsIsAnEmptyIntersectionAndWritesNothing) {
+  // An empty mesh is no closed surface (`molsurf check` fails it), so there is no file.
   TempDir dir;
   write_mesh(dir.path() / "a.ply", make_icosphere({0, 0, 0}, 1.0, {.frequency = 2}));
   write_mesh(dir.path() / "b.ply", make_icosphere({5, 0, 0}, 1.0, {.frequency = 2}));
   const auto r = run_molsurf("boolean intersection a.ply b.ply -o i.off", dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("zero faces"), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::exists(dir.path() / "i.off"));
+  EXPECT_NE(r.out.find("empty (no faces): nothing written"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "i.off"));
 }
 
 TEST(Cli, BooleanRefusesAnInvalidOperand) {
@@ -186,6 +189,256 @@ TEST(Cli, BooleanRefusesAnInvalidOperand) {
   EXPECT_NE(r.err.find("holed.off"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("boundary"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "u.off"));
+}
+
+// ---- issue 12, item 3: a written surface is always the checked surface ----------------
+
+// Writing and checking must agree for every format, lossy ones (.vert at 3 decimals,
+// .stl in float32) included: without cleanup, 1crn at 3 decimals has degenerate and
+// crossing faces, so .vert must carry more digits (or nothing may be written).
+TEST(Cli, EveryWrittenFormatPassesCheck) {
+  TempDir dir;
+  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
+  for (const char* cleanup : {"--no-cleanup", ""}) {
+    for (const char* extension : {"vtp", "vtk", "ply", "off", "stl", "obj", "vert", "msh"}) {
+      const std::string name = std::string("s.") + extension;
+      const auto r = run_molsurf(std::string("-q ") + cleanup + " -o " + name + " " + input, dir.path());
+      const bool written = std::filesystem::exists(dir.path() / name);
+      if (r.exit_code == 0) {
+        ASSERT_TRUE(written) << name << " " << cleanup;
+        const auto check = run_molsurf("check " + name, dir.path());
+        EXPECT_EQ(check.exit_code, 0) << name << " " << cleanup << "\n" << check.out << check.err;
+      } else {
+        EXPECT_FALSE(written) << name << " " << cleanup << ": refused but written";
+        EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
+      }
+      std::filesystem::remove(dir.path() / name);
+      std::filesystem::remove(dir.path() / "s.face");
+    }
+  }
+}
+
+// A tetrahedron 1e-5 high at z = 1000: valid in doubles, flat in float32 and at 3 decimals.
+Mesh thin_tetrahedron() {
+  Mesh m = fixtures::tetrahedron();
+  for (Vec3& v : m.vertices) v.z += 1000;
+  m.vertices[3] = {0.3, 0.3, 1000.00001};
+  return m;
+}
+
+TEST(Cli, BooleanChecksTheResultAsWrittenBeforeWriting) {
+  TempDir dir;
+  write_mesh(dir.path() / "thin.ply", thin_tetrahedron());
+  write_mesh(dir.path() / "cube.ply", fixtures::box({5, 5, 5}, {6, 6, 6}));
+  ASSERT_EQ(run_molsurf("check thin.ply", dir.path()).exit_code, 0);
+
+  // STL: float32 flattens the tetrahedron, so nothing is written and the message says why.
+  auto r = run_molsurf("boolean union thin.ply cube.ply -o u.stl", dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "u.stl"));
+  EXPECT_NE(r.err.find("float32"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+  // MSMS: more decimals keep it valid, and check agrees.
+  r = run_molsurf("boolean union thin.ply cube.ply -o u.vert", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("full precision"), std::string::npos) << r.out;
+  const auto check = run_molsurf("check u.vert", dir.path());
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+}
+
+// ---- item 4: never overwrite what the user did not ask to overwrite ---------------------
+
+TEST(Cli, ReportPathsNeverOverwriteInputsOrOtherOutputs) {
+  TempDir dir;
+  std::filesystem::copy_file(kData + "/pdb/1crn.pdb", dir.path() / "in.pdb");
+  const std::string original = testing::read_text(dir.path() / "in.pdb");
+  std::filesystem::create_directory(dir.path() / "sub");
+  std::filesystem::create_hard_link(dir.path() / "in.pdb", dir.path() / "sub" / "hard.pdb");
+  std::filesystem::create_symlink("target.json", dir.path() / "link.json");
+  struct Case {
+    std::string arguments, expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"--json in.pdb in.pdb", "input"},
+           {"--per-atom ./sub/../in.pdb in.pdb", "input"},
+           {"--per-residue sub/hard.pdb in.pdb", "input"},
+           {"--json out.vtp -o out.vtp in.pdb", "output of -o"},
+           {"--json a.csv --per-atom a.csv in.pdb", "output of --json"},
+           {"--per-atom o.face -o o.vert in.pdb", ".face"},
+           {"--json link.json in.pdb", "symbolic link"},
+           {"--json /dev/null in.pdb", "device"},
+           {"-o - in.pdb", "standard output"},
+           {"--json - --per-atom - in.pdb", "standard output"},
+           {"-o '' in.pdb", "empty file name"},
+           {"--json '' in.pdb", "empty file name"},
+           {"--json no_such_dir/r.json in.pdb", "does not exist"},
+       }) {
+    const auto r = run_molsurf(c.arguments, dir.path());
+    EXPECT_EQ(r.exit_code, 1) << c.arguments << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.arguments << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;  // one line
+    EXPECT_EQ(r.out.find("atoms"), std::string::npos) << c.arguments << ": refused only after work";
+  }
+  EXPECT_EQ(testing::read_text(dir.path() / "in.pdb"), original);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "target.json"));
+  for (const char* absent : {"in.vtp", "out.vtp", "o.vert", "o.face", "a.csv", "STEM.vtp"})
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / absent)) << absent;
+}
+
+// Three small touching spheres: a surface in a fraction of a second.
+void write_small_structure(const std::filesystem::path& file) {
+  std::ofstream(file) << "0 0 0 1.6\n2 0 0 1.7\n1 1.5 0 1.5\n";
+}
+
+TEST(Cli, DashWritesAReportToStandardOutputAndTheTextReportToStandardError) {
+  TempDir dir;
+  write_small_structure(dir.path() / "s.xyzr");
+  const auto r = run_molsurf("--json - -o s.ply s.xyzr", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{", 0), 0u) << r.out;  // nothing but the JSON
+  EXPECT_NE(r.out.find("\"valid\": true"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("written: s.ply, (standard output)"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "-"));
+}
+
+TEST(Cli, SaysWhatWasWrittenAndReplacesTheMsmsPairTogether) {
+  TempDir dir;
+  write_small_structure(dir.path() / "s.xyzr");
+  const auto r = run_molsurf("--per-atom atoms.csv -o pair.vert s.xyzr", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("written: pair.vert, pair.face, atoms.csv"), std::string::npos) << r.out;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+}
+
+// ---- item 5: bounded resources ---------------------------------------------------------
+
+TEST(Cli, HugeSphereCountsAreRefusedUpFrontAndTheLimitCanBeRaised) {
+  TempDir dir;
+  const std::string crambin = "'" + kData + "/pdb/1crn.pdb'";
+  for (const char* options : {"--density 1e6", "--probe 3e4", "--max-faces 1000"}) {
+    const auto r = run_molsurf(std::string(options) + " " + crambin, dir.path());
+    EXPECT_EQ(r.exit_code, 1) << options << r.err;
+    EXPECT_NE(r.err.find("faces"), std::string::npos) << options << r.err;
+    EXPECT_EQ(r.err.find("internal"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const auto limited = run_molsurf("--max-faces 1000 " + crambin, dir.path());
+  EXPECT_NE(limited.err.find("--max-faces"), std::string::npos) << limited.err;
+  // A 1000 A radius (50 M faces at density 2) and one huge enough to overflow an int.
+  std::ofstream(dir.path() / "big.xyzr") << "0 0 0 1000\n";
+  std::ofstream(dir.path() / "huge.xyzr") << "0 0 0 1e15\n";
+  for (const char* file : {"big.xyzr", "huge.xyzr"}) {
+    const auto r = run_molsurf(file, dir.path());
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find(std::string(file) + ": one sphere would have"), std::string::npos) << r.err;
+  }
+  auto r = run_molsurf("--max-faces 1000 --density 1 '" + kData + "/pdb/1crn.pdb'", dir.path());
+  EXPECT_NE(r.err.find("faces before the union"), std::string::npos) << r.err;
+  write_small_structure(dir.path() / "s.xyzr");
+  r = run_molsurf("-q --max-faces 100000 -o s.off s.xyzr", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(Cli, ThreadCountIsBounded) {
+  TempDir dir;
+  write_small_structure(dir.path() / "s.xyzr");
+  for (const char* threads : {"100000", "-1", "1025", "nan"}) {
+    const auto r = run_molsurf(std::string("--threads ") + threads + " s.xyzr", dir.path());
+    EXPECT_EQ(r.exit_code, 2) << threads << r.err;
+    EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const auto r = run_molsurf("--threads 1024 -o s.off s.xyzr", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("more than the"), std::string::npos) << r.err;  // a note, not a crash
+}
+
+TEST(Cli, RunningOutOfMemoryIsAClearError) {
+  TempDir dir;
+  // 50 spheres of 560 000 faces each, within every limit, but not within 400 MB.
+  {
+    std::ofstream many(dir.path() / "many.xyzr");
+    for (int i = 0; i < 50; ++i) many << 40 * i << " 0 0 15\n";
+  }
+  const auto r = run_molsurf("--threads 1 --density 100 -o many.vtp many.xyzr", dir.path(), "ulimit -v 400000; ");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("out of memory"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "many.vtp"));
+}
+
+TEST(Cli, OutOfRangeCoordinatesAreInputErrorsWithFileAndLine) {
+  TempDir dir;
+  std::ofstream(dir.path() / "far.xyzr") << "0 0 0 1.5\n1e16 0 0 1.5\n";
+  std::ofstream(dir.path() / "far.pqr") << "ATOM      1  CA  ALA A   1       1.0     2.0     3.0  0.00 1.80\n"
+                                           "ATOM      2  CB  ALA A   1      -2e17    2.0     3.0  0.00 1.80\n";
+  // PDB: x in columns 31-38; " 1.0e+16" fills them.
+  std::ofstream(dir.path() / "far.pdb")
+      << "ATOM      1  CA  ALA A   1       1.000   2.000   3.000  1.00  0.00           C\n"
+      << "ATOM      2  CB  ALA A   1    " << " 1.0e+16" << "   2.000   3.000  1.00  0.00           C\n";
+  for (const char* file : {"far.xyzr", "far.pqr", "far.pdb"}) {
+    const auto r = run_molsurf(file, dir.path());
+    EXPECT_EQ(r.exit_code, 1) << file;
+    EXPECT_NE(r.err.find(std::string(file) + ":2:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("out of range"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("bug"), std::string::npos) << r.err;
+  }
+}
+
+// ---- item 8: one line each, naming the file, the line and the problem ------------------
+
+TEST(Cli, BadOptionValuesGetOneLineMessages) {
+  TempDir dir;
+  write_small_structure(dir.path() / "s.xyzr");
+  for (const char* options : {"--probe nan", "--probe inf", "--density nan", "--density -inf", "--density 0",
+                              "--probe 1e400", "--probe -1", "--frequency 1e400", "--max-faces 0"}) {
+    const auto r = run_molsurf(std::string(options) + " s.xyzr", dir.path());
+    EXPECT_EQ(r.exit_code, 2) << options;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_LT(r.err.size(), 200u) << r.err;  // no 309-digit numbers
+    EXPECT_EQ(r.err.find("179769"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "s.vtp")) << options;
+  }
+}
+
+TEST(Cli, InputProblemsGetOneLineMessages) {
+  TempDir dir;
+  const std::filesystem::path d = dir.path();
+  std::ofstream(d / "zero.pqr") << "REMARK test\nATOM      1  CA  ALA A   1       1.0     2.0     3.0  0.00 1.80\n"
+                                   "ATOM      2  CB  ALA A   1       2.0     2.0     3.0  0.00 0.00\n";
+  {
+    // mmCIF whose _atom_site table has no Cartn_* columns.
+    std::string cif = testing::read_text(kData + "/pdb/3pqr.cif");
+    for (const char* axis : {"x ", "y ", "z "}) {
+      const std::string from = std::string("_atom_site.Cartn_") + axis, to = std::string("_atom_site.Fract_") + axis;
+      cif.replace(cif.find(from), from.size(), to);
+    }
+    std::ofstream(d / "nocartn.cif") << cif;
+    const std::string gz = testing::read_text(kData + "/pdb/1crn.cif.gz");
+    std::ofstream(d / "cut.cif.gz", std::ios::binary) << gz.substr(0, gz.size() / 2);
+    std::ofstream(d / "radii.txt", std::ios::binary) << "default 1.8\n\x01\x02\xff\xfe\x1b[31mred 1\n";
+  }
+  std::filesystem::create_symlink("loop2", d / "loop1");
+  std::filesystem::create_symlink("loop1", d / "loop2");
+  struct Case {
+    std::string arguments, expected;
+  };
+  const std::string crambin = "'" + kData + "/pdb/1crn.pdb'";
+  for (const Case& c : std::vector<Case>{
+           {"--probe 0 zero.pqr", "zero.pqr: atom 2 (serial 2, CB of ALA 1"},
+           {"nocartn.cif", "nocartn.cif: the _atom_site table has no _atom_site.Cartn_x column"},
+           {"cut.cif.gz", "cut.cif.gz: truncated gzip file"},
+           {"loop1", "symbolic link loop"},
+           {"--radii radii.txt " + crambin, "radii.txt:2: unknown line kind '\\x01\\x02\\xff\\xfe\\x1b[31mred'"},
+       }) {
+    const auto r = run_molsurf(c.arguments, d);
+    EXPECT_NE(r.exit_code, 0) << c.arguments;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.arguments << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.find("internal"), std::string::npos) << r.err;
+    for (unsigned char ch : r.err) EXPECT_TRUE(ch == '\n' || (ch >= 0x20 && ch < 0x7f)) << c.arguments;
+  }
 }
 
 }  // namespace

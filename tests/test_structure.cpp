@@ -1,11 +1,13 @@
 // read_structure(): atom counts on the whole corpus, selection rules, radius assignment
 // and the error messages for bad input.
 #include <gtest/gtest.h>
+#include <stdlib.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -428,6 +430,78 @@ TEST(Errors, XyzrHasNoChains) {
   options.chains = {"A"};
   const std::string message = read_error(test_dir / "plain.xyzr", options);
   EXPECT_NE(message.find("no chain identifiers"), std::string::npos) << message;
+}
+
+// ---- issue 12, items 5 and 8: input errors name the file, the line and the problem -------
+
+class InputErrors : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (std::filesystem::temp_directory_path() / "molsurf_input_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path put(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+    return dir_ / name;
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(InputErrors, CoordinatesBeyond1e16AreRefusedWithFileAndLine) {
+  const auto xyzr = put("far.xyzr", "0 0 0 1.5\n0 -1e16 0 1.5\n");
+  EXPECT_EQ(read_error(xyzr), xyzr.string() + ":2: y -1e+16 is out of range (its magnitude must be below 1e16 angstrom)");
+  const auto radius = put("wide.xyzr", "0 0 0 2e16\n");
+  EXPECT_NE(read_error(radius).find("wide.xyzr:1: radius 2e+16 is out of range"), std::string::npos)
+      << read_error(radius);
+  const auto pqr = put("far.pqr", "ATOM      1  CA  ALA A   1       1.0     2.0     3.0  0.00 1.80\n"
+                                  "ATOM      2  CB  ALA A   1       2.0     2.0     3e300  0.00 1.80\n");
+  EXPECT_EQ(read_error(pqr),
+            pqr.string() + ":2: ATOM record: z coordinate 3e+300 is out of range (its magnitude must be below 1e16 "
+                           "angstrom)");
+  const auto pdb = put("far.pdb", "ATOM      1  CA  ALA A   1    -1.0e+17   2.000   3.000  1.00  0.00           C\n");
+  EXPECT_NE(read_error(pdb).find("far.pdb:1: ATOM record: x coordinate -1e+17 is out of range"), std::string::npos)
+      << read_error(pdb);
+  // Just below the limit is a coordinate like any other.
+  const auto near = put("near.xyzr", "9.9e15 0 0 1.5\n");
+  EXPECT_EQ(read_error(near), "");
+}
+
+TEST_F(InputErrors, TruncatedGzipSaysSoInOneLine) {
+  std::ifstream in(pdb_dir / "1crn.cif.gz", std::ios::binary);
+  const std::string gz((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto cut = put("cut.cif.gz", gz.substr(0, gz.size() / 2));
+  const std::string message = read_error(cut);
+  EXPECT_EQ(message.rfind(cut.string() + ": truncated gzip file", 0), 0u) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  const auto garbage = put("garbage.pdb.gz", "\x1f\x8b\x08\x00garbage that is not deflate data");
+  EXPECT_NE(read_error(garbage).find("garbage.pdb.gz: "), std::string::npos);
+  EXPECT_EQ(read_error(garbage).find('\n'), std::string::npos) << read_error(garbage);
+}
+
+TEST_F(InputErrors, MmcifWithoutCartesianCoordinatesSaysWhatIsMissing) {
+  std::ifstream in(pdb_dir / "3pqr.cif", std::ios::binary);
+  std::string cif((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "_atom_site.Cartn_y ";
+  cif.replace(cif.find(from), from.size(), "_atom_site.Fract_y ");
+  const auto file = put("no_y.cif", cif);
+  EXPECT_EQ(read_error(file), file.string() +
+                                  ": the _atom_site table has no _atom_site.Cartn_y column: no Cartesian coordinates "
+                                  "(fractional-only or incomplete files are not read)");
+  const auto no_atoms = put("no_atoms.cif", "data_x\n_cell.length_a 10\n");
+  EXPECT_NE(read_error(no_atoms).find("no _atom_site table"), std::string::npos) << read_error(no_atoms);
+}
+
+TEST_F(InputErrors, GarbageRadiusFileIsQuotedEscapedAndShort) {
+  const auto radii = put("radii.txt", "default 1.8\n\x01\x02\xff\x1b[31m" + std::string(200, 'A') + " 1 2\n");
+  ReadOptions options;
+  options.radius_file = radii;
+  const std::string message = read_error(pdb_dir / "1crn.pdb", options);
+  EXPECT_EQ(message.rfind(radii.string() + ":2: unknown line kind '\\x01\\x02\\xff\\x1b[31mAAAAAAAAAAAAAAAA...'", 0),
+            0u)
+      << message;
+  for (unsigned char c : message) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << message;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
@@ -11,6 +12,8 @@
 namespace molsurf {
 
 enum class MeshFormat { vtp, vtk, ply, off, stl, obj, msms, msh };
+
+inline constexpr int kMsmsExact = -1;  // MeshWriteOptions::msms_decimals: round-trip exact
 
 // .vtp .vtk .ply .off .stl .obj .vert/.face (MSMS pair) .msh; throws on anything else.
 MeshFormat mesh_format_from_path(const std::filesystem::path& path);
@@ -22,12 +25,33 @@ struct MeshWriteOptions {
   std::span<const Atom> atoms;
   bool ascii = false;          // .ply (binary little-endian by default), .stl
   bool msms_header = true;     // MSMS .vert/.face 3-line headers
+  // Decimals of MSMS .vert coordinates: 3 is MSMS's own "%9.3f"; kMsmsExact writes each
+  // coordinate in the shortest fixed-point text that reads back as the same double.
+  // Readers of .vert (MSMS tools, PyGBe, TABI-PB, MaSIF) split on whitespace, so wider
+  // columns are read correctly (docs/formats.md).
+  int msms_decimals = 3;
   double probe_radius = 1.4;   // recorded in MSMS headers
   double density = 2.0;        // recorded in MSMS headers
 };
 
-// For MSMS the path may name either file of the pair (or end in .vert); both are written.
+// For MSMS the path may name either file of the pair (or end in .vert); both are written,
+// and replace the old pair only when both are complete.
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshWriteOptions& options = {});
+
+// The files write_mesh() writes for `path`: the .vert/.face pair for MSMS, else `path`.
+std::vector<std::filesystem::path> mesh_output_files(const std::filesystem::path& path);
+
+// Whether `format` keeps every coordinate exactly (binary doubles or shortest round-trip
+// text): all but STL (float32 by definition) and MSMS at a fixed number of decimals.
+bool mesh_format_is_exact(MeshFormat format, const MeshWriteOptions& options = {});
+
+// The mesh that read_mesh() gives back for the file write_mesh() writes: coordinates
+// rounded as the format stores them, and for STL, whose facets share no vertices,
+// corners with equal float32 coordinates merged into one vertex, in the reader's order.
+// Face tags are kept (for reports) even where the format drops them. For an exact
+// format this is `mesh` itself. Check this mesh, not `mesh`, before writing a lossy
+// format: rounding can make faces degenerate or cross.
+Mesh mesh_as_written(const Mesh& mesh, MeshFormat format, const MeshWriteOptions& options = {});
 
 // Reads .stl (ASCII/binary) .off .ply (ASCII/binary) .obj .vtk .vtp (and MSMS .vert/.face).
 // Coincident vertices are not merged except for STL, which has no shared vertices

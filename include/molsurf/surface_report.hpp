@@ -57,7 +57,10 @@ SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);
 std::string format_surface_report(const SurfaceReport& report);
 std::string surface_report_json(const SurfaceReport& report);
 
-// CSV tables (atomic writes): one row per atom with its area, and one per residue.
+// CSV tables: one row per atom with its area, and one per residue; as text, or written
+// atomically to a file.
+std::string per_atom_csv(std::span<const Atom> atoms, std::span<const double> area);
+std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area);
 void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area);
 void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
                            std::span<const double> area);

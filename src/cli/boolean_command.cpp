@@ -1,12 +1,16 @@
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "molsurf/output_files.hpp"
 #include "molsurf/report.hpp"
+#include "molsurf/written_check.hpp"
+#include "cli/validators.hpp"
 
 namespace molsurf::cli {
 
@@ -16,8 +20,8 @@ void BooleanCommand::add_options(CLI::App& app) {
       ->check(CLI::IsMember({"union", "intersection", "difference"}));
   app.add_option("A", a, "First mesh: closed, outward, 2-manifold, no self-intersection")
       ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("B", b, "Second mesh, same requirements")->required()->check(CLI::ExistingFile);
+      ->check(readable_file());
+  app.add_option("B", b, "Second mesh, same requirements")->required()->check(readable_file());
   app.add_option("-o,--output", output, "Result mesh; the format follows the extension")->required();
   app.add_flag("--outer-only", outer_only,
                "union only: keep the outer envelope (what is seen from outside: no cavities); "
@@ -37,7 +41,10 @@ bool open_but_sound(const MeshCheck& c) {
 }  // namespace
 
 int BooleanCommand::run() const {
-  mesh_format_from_path(output);  // reject an unknown extension before any work
+  const std::vector<std::filesystem::path> inputs{a, b};
+  const std::vector<OutputRequest> outputs{{output, "-o", true}};
+  check_output_paths(inputs, outputs);  // never over an operand, a link or a device
+  mesh_format_from_path(output);        // reject an unknown extension before any work
   const BooleanOp op = operation == "union"          ? BooleanOp::union_
                        : operation == "intersection" ? BooleanOp::intersection
                                                      : BooleanOp::difference;
@@ -61,19 +68,31 @@ int BooleanCommand::run() const {
                          why);
   }
   const BooleanResult r = outer_only ? union_outer_envelope(mesh_a, mesh_b) : boolean(mesh_a, mesh_b, op);
-  write_mesh(output, r.mesh);
-  const MeshCheck check = check_mesh(r.mesh);
   // From an open operand the envelope is open: its free boundary and the edges where a
   // sheet seen from both sides meets the rest are expected there, nothing else.
-  const bool open_result = open_input && !check.valid() && check.misoriented_edges == 0 &&
-                           check.degenerate_faces == 0 && check.duplicate_faces == 0 &&
-                           check.intersecting_pairs == 0;
+  const auto acceptable = [open_input](const MeshCheck& c) {
+    return c.valid() || (open_input && c.misoriented_edges == 0 && c.degenerate_faces == 0 &&
+                         c.duplicate_faces == 0 && c.intersecting_pairs == 0);
+  };
+  // Checked before anything is written, as the file will hold it (.vert, .stl round).
+  const MeshCheck computed = check_mesh(r.mesh);
+  const bool empty = r.mesh.faces.empty();
+  std::optional<WrittenCheck> written;
+  if (!empty) written = check_as_written(output, r.mesh, computed, MeshWriteOptions{}, MeshCheckOptions{}, acceptable);
+  const MeshCheck& check = written ? written->check : computed;
+  const bool ok = !empty && acceptable(check);
+  std::vector<std::filesystem::path> written_files;
+  if (ok) {
+    OutputFiles files;
+    files.add_mesh(output, r.mesh, written->options);
+    written_files = files.commit();
+  }
+  const bool open_result = ok && !check.valid();
   if (!quiet) {
     const BooleanStats& s = r.stats;
     std::printf("%s%s of %s (%zu faces) and %s (%zu faces) -> %s\n", boolean_op_name(op),
                 outer_only ? " (outer envelope)" : "", a.string().c_str(), s.faces_a, b.string().c_str(), s.faces_b,
                 output.string().c_str());
-    if (r.mesh.faces.empty()) std::printf("the result is empty: written with zero faces\n");
     std::printf("  candidate pairs %zu, intersecting %zu (coplanar %zu), intersection points %zu, faces split %zu\n",
                 s.candidate_pairs, s.intersecting_pairs, s.coplanar_pairs, s.intersection_points, s.split_faces);
     if (outer_only)
@@ -88,13 +107,29 @@ int BooleanCommand::run() const {
                 1e3 * s.seconds.cull, 1e3 * s.seconds.intersect, 1e3 * s.seconds.split,
                 outer_only ? "flood fill" : "classify", 1e3 * (s.seconds.classify), 1e3 * s.seconds.stitch,
                 1e3 * s.seconds.total());
-    std::cout << format_mesh_check(check, output.string());
+    if (!empty) std::cout << format_mesh_check(check, output.string());
     if (open_result)
       std::printf("the result is an open surface, as an open operand makes it: %zu boundary edges, %zu edges where "
                   "a two-sided sheet meets the rest (expected, not a defect)\n",
                   check.boundary_edges, check.nonmanifold_edges);
+    if (written && !written->note.empty()) std::printf("note: %s\n", written->note.c_str());
+    if (ok) std::printf("written: %s\n", written_files.size() == 2
+                                              ? (written_files[0].string() + ", " + written_files[1].string()).c_str()
+                                              : written_files.front().string().c_str());
   }
-  return check.valid() || open_result ? 0 : 1;
+  if (empty) {
+    // An empty mesh is no closed surface (molsurf check fails it), so there is no file.
+    if (!quiet) std::printf("the result is empty (no faces): nothing written\n");
+    return 0;
+  }
+  if (!ok) {
+    std::string why;
+    for (const std::string& defect : check.defects()) why += (why.empty() ? "" : "; ") + defect;
+    std::fprintf(stderr, "molsurf: error: %s: not written: the result failed its check: %s\n",
+                 output.string().c_str(), why.c_str());
+    return 1;
+  }
+  return 0;
 }
 
 }  // namespace molsurf::cli

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/report.hpp"
@@ -8,7 +9,7 @@
 namespace molsurf::cli {
 
 void CheckCommand::add_options(CLI::App& app) {
-  app.add_option("MESH", mesh, "Mesh file to check")->required()->check(CLI::ExistingFile);
+  app.add_option("MESH", mesh, "Mesh file to check")->required()->check(readable_file());
   app.add_flag("--json", json, "Print the result as JSON instead of a table");
   app.add_flag("--no-self-intersections", skip_self_intersections,
                "Skip the (exact, BVH-accelerated) self-intersection test");

@@ -2,10 +2,12 @@
 // The molsurf commands: each registers its options on a CLI11 (sub)command and runs
 // by calling the library. Exit codes: 0 success, 1 failure (bad input or invalid mesh).
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
 #include "molsurf/atoms.hpp"
+#include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 
 namespace molsurf::cli {
@@ -22,7 +24,14 @@ struct SurfaceCommand {
   bool skip_check = false;
   bool skip_cleanup = false;
   std::filesystem::path json, per_atom, per_residue;
+  std::uint64_t max_faces = kDefaultMaxSphereFaces;
   bool quiet = false;
+  // Set by add_options: whether an option was given at all (an empty value, as in
+  // `-o ""`, is then an error rather than the default).
+  const CLI::Option* output_option = nullptr;
+  const CLI::Option* json_option = nullptr;
+  const CLI::Option* per_atom_option = nullptr;
+  const CLI::Option* per_residue_option = nullptr;
 
   void add_options(CLI::App& app);
   int run() const;

@@ -1,9 +1,12 @@
 // molsurf: the command line. It only parses options and calls the library.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 
 #include "cli/commands.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/output_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace molsurf::cli;
@@ -38,7 +41,21 @@ int main(int argc, char** argv) {
       "engine; prints the result's validation, area, volume and the time of each step.");
   boolean.add_options(*boolean_app);
 
-  CLI11_PARSE(app, argc, argv);
+  // Usage errors in one line, like every other error (CLI11_PARSE adds a second).
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "molsurf: error: " << e.what() << " (run with --help for the options)\n";
+    return 2;
+  }
+  // A Ctrl-C (or kill) while a file is being written leaves no temporary behind.
+  molsurf::remove_temporaries_on_signals();
   try {
     if (check_app->parsed()) return check.run();
     if (boolean_app->parsed()) return boolean.run();
@@ -49,6 +66,15 @@ int main(int argc, char** argv) {
     return surface.run();
   } catch (const molsurf::Error& e) {
     std::cerr << "molsurf: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // Memory ran out despite the up-front estimate (other programs, a low ulimit).
+    std::cerr << "molsurf: error: out of memory (an allocation failed); nothing was written. Lower --density "
+                 "or --frequency, select fewer atoms, or run where more memory is available\n";
+    return 1;
+  } catch (const std::length_error& e) {
+    std::cerr << "molsurf: error: out of memory: a table would exceed the addressable size (" << e.what()
+              << "); nothing was written. Lower --density or --frequency\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "molsurf: internal error: " << e.what() << "\n";

@@ -13,7 +13,10 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/report.hpp"
 #include "molsurf/surface_report.hpp"
-#include "io/atomic_file.hpp"
+#include "molsurf/output_files.hpp"
+#include "molsurf/resource_limits.hpp"
+#include "molsurf/written_check.hpp"
+#include "cli/validators.hpp"
 
 namespace molsurf::cli {
 
@@ -21,10 +24,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
   app.add_option("STRUCTURE", structure,
                  "Structure file: PDB (.pdb .ent), mmCIF (.cif .mmcif), either gzipped (.gz),\n"
                  "PQR (.pqr: radius column used) or MSMS sphere list (.xyzr: x y z r [name])")
-      ->check(CLI::ExistingFile);
-  app.add_option("-o,--output", output,
-                 "Surface file; the format follows the extension: .vtp .vtk .ply .off .stl .obj,\n"
-                 ".vert (MSMS .vert/.face pair), .msh (gmsh 2.2). Default: STEM.vtp in the current directory");
+      ->check(readable_file());
+  output_option = app.add_option("-o,--output", output,
+                                 "Surface file; the format follows the extension: .vtp .vtk .ply .off .stl .obj,\n"
+                                 ".vert (MSMS .vert/.face pair), .msh (gmsh 2.2). Default: STEM.vtp in the current "
+                                 "directory.\nNever a symbolic link, device or an input file (refused)");
 
   auto* input = "Structure selection";
   app.add_option("--model", read.model, "Model number as written in the file (default: the first model)")
@@ -43,22 +47,28 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->capture_default_str()
       ->group(input);
   app.add_option("--radii", read.radius_file, "User radius table (format: docs/radii.md); overrides --radius-set")
-      ->check(CLI::ExistingFile)
+      ->check(readable_file())
       ->group(input);
 
   auto* sphere = "Spheres";
   app.add_option("--probe", spheres.probe, "Probe radius in angstrom added to every atom; 0 gives the vdW surface")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_number(0, 1e15))
       ->capture_default_str()
       ->group(sphere);
   app.add_option("--density", spheres.density,
                  "Icosphere vertices per square angstrom of sphere surface (MSMS's convention)")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_number(0, 1e9, true))
       ->capture_default_str()
       ->group(sphere);
   app.add_option("--frequency", spheres.frequency,
                  "Fixed icosphere frequency n for every atom (20 n^2 faces); overrides --density")
-      ->check(CLI::Range(1, 200))
+      ->check(whole_number(1, 200))
+      ->group(sphere);
+  app.add_option("--max-faces", max_faces,
+                 "Refuse to start when the spheres would have more faces than this before the union\n"
+                 "(about 80 bytes of memory each; the 272k-atom capsid at density 4 has 253 million)")
+      ->check(whole_number(1, 100'000'000'000))
+      ->capture_default_str()
       ->group(sphere);
   app.add_flag("--inscribed", [this](std::int64_t) { spheres.area_corrected = false; },
                "Put icosphere vertices on the true spheres (inscribed polyhedra: about 1 % less volume).\n"
@@ -68,10 +78,14 @@ void SurfaceCommand::add_options(CLI::App& app) {
   auto* output_group = "Output and reports";
   app.add_flag("--outer-only", outer_only, "Keep the outer surface only, without cavities (as MSMS does by default)")
       ->group(output_group);
-  app.add_option("--json", json, "Write the report as JSON to this file")->group(output_group);
-  app.add_option("--per-atom", per_atom, "Write each atom's area (A^2) to this CSV file")->group(output_group);
-  app.add_option("--per-residue", per_residue, "Write each residue's area (A^2) to this CSV file")
-      ->group(output_group);
+  json_option = app.add_option("--json", json, "Write the report as JSON to this file ('-': standard output)")
+                    ->group(output_group);
+  per_atom_option =
+      app.add_option("--per-atom", per_atom, "Write each atom's area (A^2) to this CSV file ('-': standard output)")
+          ->group(output_group);
+  per_residue_option = app.add_option("--per-residue", per_residue,
+                                      "Write each residue's area (A^2) to this CSV file ('-': standard output)")
+                           ->group(output_group);
   app.add_flag("--no-cleanup", skip_cleanup,
                "Skip the surface improvement (paper 2.5: collapse of slivers under 5 degrees)")
       ->group(output_group);
@@ -84,8 +98,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "parallel) or pairwise (hierarchical pairwise union, the paper's formulation; the reference)")
       ->check(CLI::IsMember({"one-pass", "pairwise"}))
       ->capture_default_str();
-  app.add_option("--threads", threads, "Threads for the union (default: all cores); the result does not depend on it")
-      ->check(CLI::NonNegativeNumber);
+  app.add_option("--threads", threads,
+                 "Threads for the union, 1 to 1024 (default, or 0: all cores); the result does not depend on it")
+      ->check(whole_number(0, 1024));
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
 }
 
@@ -120,12 +135,23 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 int SurfaceCommand::run() const {
   std::filesystem::path out = output;
-  if (out.empty()) {
+  if (out.empty() && output_option->count() == 0) {
     std::filesystem::path stem = structure.filename();
     while (stem.has_extension()) stem = stem.stem();  // 1crn.cif.gz -> 1crn
     out = stem.string() + ".vtp";
   }
+  // Every output checked before any work: a wrong path costs nothing.
+  std::vector<OutputRequest> outputs{{out, "-o", true}};
+  if (json_option->count() > 0) outputs.push_back({json, "--json"});
+  if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
+  if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
+  const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
+  check_output_paths(inputs, outputs);
   mesh_format_from_path(out);  // reject an unknown extension before any work
+  // With a report on standard output, the text report goes to standard error.
+  bool report_to_stdout = false;
+  for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
+  std::ostream& text = report_to_stdout ? std::cerr : std::cout;
 
   ReadOptions options = read;
   std::stringstream list(chains);
@@ -133,12 +159,16 @@ int SurfaceCommand::run() const {
     if (!chain.empty()) options.chains.push_back(chain);
 
   if (threads > 0) omp_set_num_threads(threads);  // for every parallel loop, the engine's too
+  if (threads > omp_get_num_procs() && !quiet)
+    std::cerr << "molsurf: note: --threads " << threads << " is more than the " << omp_get_num_procs()
+              << " cores available: the result is the same, but not faster\n";
   SurfaceReport report;
   auto clock = std::chrono::steady_clock::now();
   const Structure s = read_structure(structure, options);
   report.seconds.read = seconds_since(clock);
+  check_sphere_resources(structure, s.atoms, spheres, max_faces);  // before any sphere is built
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
-  if (!quiet) std::cout << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
+  if (!quiet) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 
   SurfaceOptions surface_options;
   surface_options.spheres = spheres;
@@ -180,18 +210,21 @@ int SurfaceCommand::run() const {
                 "report it with the input file and options):" + why);
   }
 
-  clock = std::chrono::steady_clock::now();
   MeshWriteOptions write_options;
   write_options.atoms = s.atoms;
   write_options.probe_radius = spheres.probe;
   write_options.density = spheres.density;
-  write_mesh(out, surface, write_options);
-  const std::vector<double> atom_area = area_per_atom(surface, s.atoms.size());
-  if (!per_atom.empty()) write_per_atom_csv(per_atom, s.atoms, atom_area);
-  if (!per_residue.empty()) write_per_residue_csv(per_residue, s.atoms, atom_area);
-  report.seconds.write = seconds_since(clock);
+  // Lossy formats (.vert, .stl): the surface is checked again as the file will hold it.
+  clock = std::chrono::steady_clock::now();
+  const WrittenCheck written =
+      check_as_written(out, surface, check, write_options, check_options, [](const MeshCheck& c) { return c.valid(); });
+  report.seconds.check += seconds_since(clock);
+  if (!written.note.empty() && !quiet) std::cerr << "molsurf: note: " << written.note << "\n";
+  const Mesh& stored = written.rounded ? *written.rounded : surface;  // what the file holds
 
-  const SurfaceReport measured = make_surface_report(surface, check);
+  clock = std::chrono::steady_clock::now();
+  const std::vector<double> atom_area = area_per_atom(stored, s.atoms.size());
+  const SurfaceReport measured = make_surface_report(stored, written.check);
   report.faces = measured.faces;
   report.vertices = measured.vertices;
   report.area = measured.area;
@@ -206,8 +239,21 @@ int SurfaceCommand::run() const {
   report.threads = threads > 0 ? threads : omp_get_max_threads();
   report.output = out;
   report.outer_only = outer_only;
-  if (!json.empty()) write_file_atomically(json, surface_report_json(report));
-  if (!quiet) std::cout << "\n" << format_surface_report(report);
+
+  // All or nothing: every file is complete before any replaces an old one.
+  OutputFiles files;
+  files.add_mesh(out, surface, written.options);
+  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
+  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, atom_area));
+  report.seconds.write = seconds_since(clock);
+  if (!json.empty()) files.add_text(json, surface_report_json(report));
+  const std::vector<std::filesystem::path> written_files = files.commit();
+  if (!quiet) {
+    text << "\n" << format_surface_report(report);
+    std::string list;
+    for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
+    text << "written: " << list << "\n";
+  }
   return 0;
 }
 

@@ -1,6 +1,7 @@
 #include "io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -8,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "io/temporary_registry.hpp"
 #include "molsurf/error.hpp"
 
 namespace molsurf {
@@ -22,8 +24,26 @@ std::string reason(int error_number) {
 
 }  // namespace
 
+void check_replaceable(const std::filesystem::path& target) {
+  struct stat status {};
+  if (::lstat(target.c_str(), &status) != 0) {
+    if (errno == ENOENT) return;  // a new file
+    if (errno == ELOOP) fail(target, "cannot write: a symbolic link loop");
+    if (errno == ENOTDIR) fail(target, "cannot write: a part of the path is not a directory");
+    return;  // other reasons (permissions) surface when the temporary is created
+  }
+  if (S_ISREG(status.st_mode)) return;
+  if (S_ISLNK(status.st_mode))
+    fail(target, "cannot write: it is a symbolic link; molsurf does not replace links or write through "
+                 "them (name the file the link points to instead)");
+  if (S_ISDIR(status.st_mode)) fail(target, "cannot write: it is a directory");
+  fail(target, "cannot write: it is a device, pipe or socket, not a regular file; molsurf only replaces "
+               "regular files (to discard a report, leave its option out)");
+}
+
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   if (target_.filename().empty()) fail(target_, "cannot write: not a file name");
+  check_replaceable(target_);
   const std::filesystem::path directory = target_.parent_path();
   std::string prefix(".");
   prefix.append(target_.filename().string()).append(".tmp-").append(std::to_string(::getpid())).append("-");
@@ -31,22 +51,30 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   // their own temporary, without a shared counter.
   for (int attempt = 0; attempt < kMaxNameAttempts; ++attempt) {
     std::filesystem::path candidate = directory / (prefix + std::to_string(attempt));
+    // Registered before it exists, so no signal can fall between creation and
+    // registration; unlinking a name that is not there yet is harmless.
+    const int slot = detail::register_temporary(candidate);
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
       temp_ = std::move(candidate);
+      registry_slot_ = slot;
       return;
     }
-    if (errno != EEXIST) fail_with_errno(errno);
+    const int error_number = errno;
+    detail::unregister_temporary(slot);
+    if (error_number != EEXIST) fail_with_errno(error_number);
   }
   fail(target_, "cannot write: no free temporary file name");
 }
 
 AtomicFile::~AtomicFile() {
-  if (committed_ || temp_.empty()) return;
-  if (stream_.is_open()) stream_.close();
-  std::error_code ignored;  // a destructor must not throw; a leftover temp is harmless
-  std::filesystem::remove(temp_, ignored);
+  if (!committed_ && !temp_.empty()) {
+    if (stream_.is_open()) stream_.close();
+    std::error_code ignored;  // a destructor must not throw; a leftover temp is harmless
+    std::filesystem::remove(temp_, ignored);
+  }
+  detail::unregister_temporary(registry_slot_);
 }
 
 std::ofstream& AtomicFile::stream() {
@@ -65,22 +93,58 @@ void AtomicFile::write(std::string_view data) {
   if (!out) fail_with_errno(errno);
 }
 
+void AtomicFile::finish() {
+  if (committed_ || !stream_.is_open()) return;
+  errno = 0;
+  stream_.flush();
+  stream_.close();
+  if (stream_.fail()) fail_with_errno(errno);
+}
+
 void AtomicFile::commit() {
   if (committed_) return;
-  if (stream_.is_open()) {
-    errno = 0;
-    stream_.flush();
-    stream_.close();
-    if (stream_.fail()) fail_with_errno(errno);
-  }
+  finish();
+  check_replaceable(target_);  // again: the target may have changed while we computed
   std::error_code error;
   std::filesystem::rename(temp_, target_, error);
   if (error) fail(target_, "cannot write: " + error.message());
   committed_ = true;
+  detail::unregister_temporary(registry_slot_);
+  registry_slot_ = -1;
 }
 
 void AtomicFile::fail_with_errno(int error_number) const {
   fail(target_, "cannot write: " + reason(error_number));
+}
+
+AtomicFile& AtomicFileSet::add(std::filesystem::path target) {
+  files_.push_back(std::make_unique<AtomicFile>(std::move(target)));
+  return *files_.back();
+}
+
+std::vector<std::filesystem::path> AtomicFileSet::targets() const {
+  std::vector<std::filesystem::path> result;
+  for (const auto& file : files_) result.push_back(file->target());
+  return result;
+}
+
+void AtomicFileSet::commit() {
+  for (const auto& file : files_) file->finish();  // every temporary complete first
+  for (std::size_t i = 0; i < files_.size(); ++i) {
+    try {
+      files_[i]->commit();
+    } catch (const Error& error) {
+      if (i == 0) throw;
+      std::string replaced, left;
+      for (std::size_t k = 0; k < files_.size(); ++k) {
+        if (k == i) continue;
+        std::string& list = k < i ? replaced : left;
+        list += (list.empty() ? "" : ", ") + files_[k]->target().string();
+      }
+      throw Error(std::string(error.what()) + "; already written: " + replaced +
+                  (left.empty() ? "" : "; not written: " + left));
+    }
+  }
 }
 
 void write_file_atomically(const std::filesystem::path& target, std::string_view content) {

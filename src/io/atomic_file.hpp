@@ -2,14 +2,22 @@
 // A file that appears complete or not at all. Data goes to a temporary file beside the
 // target (same directory, so the final rename never crosses a file system) and is
 // renamed over the target by commit(); if the object dies uncommitted (an exception,
-// an early return) the temporary is removed and the old target is left untouched.
+// an early return) the temporary is removed and the old target is left untouched, and
+// if the process is interrupted (SIGINT, SIGTERM, SIGHUP, once
+// detail::remove_temporaries_on_signals() is installed) the temporary is removed too.
+//
+// Only regular files are replaced: a target that is a symbolic link, a directory, a
+// device, a pipe or a socket is refused with a message (renaming over a link would
+// silently replace the link, and over /dev/null the device node itself).
 //
 //   AtomicFile out("report.json");
 //   out.stream() << text;          // or out.write(text), or hand out.temp_path() to a library
 //   out.commit();
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string_view>
+#include <vector>
 
 namespace molsurf {
 
@@ -17,7 +25,8 @@ class AtomicFile {
  public:
   // Reserves a unique temporary name ".NAME.tmp-PID-N" beside `target` (created empty,
   // exclusively, so concurrent writers never share one). Throws molsurf::Error naming
-  // the target and the OS reason when the directory is missing or not writable.
+  // the target and the reason when the directory is missing or not writable, or the
+  // target exists and is not a regular file.
   explicit AtomicFile(std::filesystem::path target);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
@@ -31,7 +40,10 @@ class AtomicFile {
   std::ofstream& stream();
   void write(std::string_view data);
 
-  // Flushes, checks every write succeeded, and renames the temporary over the target.
+  // Flushes and closes the temporary, checking every write succeeded; after this only
+  // the rename is left to do. Throws molsurf::Error when anything failed.
+  void finish();
+  // finish(), then renames the temporary over the target.
   // Throws molsurf::Error (the temporary is then removed) when anything failed.
   void commit();
   bool committed() const { return committed_; }
@@ -42,7 +54,28 @@ class AtomicFile {
   std::filesystem::path target_;
   std::filesystem::path temp_;
   std::ofstream stream_;
+  int registry_slot_ = -1;
   bool committed_ = false;
+};
+
+// Throws molsurf::Error unless `target` is absent or a regular file (not a symbolic
+// link, directory, device, pipe or socket): what AtomicFile may replace.
+void check_replaceable(const std::filesystem::path& target);
+
+// Several files replaced together: each is written to its temporary, and commit()
+// renames them only after every one is complete (finish()ed), so a failure while
+// writing leaves every old target untouched. A rename itself can still fail midway (a
+// full disk does not, but a target directory removed under us does); the Error then
+// names the files already replaced and those left as they were.
+class AtomicFileSet {
+ public:
+  AtomicFile& add(std::filesystem::path target);
+  void commit();
+  bool empty() const { return files_.empty(); }
+  std::vector<std::filesystem::path> targets() const;
+
+ private:
+  std::vector<std::unique_ptr<AtomicFile>> files_;  // pointers: add() hands out references
 };
 
 // The common case: the whole content at once.

@@ -12,18 +12,38 @@
 
 #include "molsurf/io.hpp"
 
+namespace molsurf {
+class AtomicFileSet;
+}
+
 namespace molsurf::mesh_io {
 
 using std::filesystem::path;
 
-void write_vtp(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_vtk(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_ply(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_off(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_stl(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_obj(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_msms(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
-void write_msh(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+// Writers add their file(s) to `files` and write the temporaries; the caller commits the
+// set, so a mesh and its reports (or MSMS's .vert and .face) are replaced together.
+
+void write_vtp(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_vtk(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_ply(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_off(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_stl(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_obj(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+void write_msh(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+// The writer for `file`'s extension (write_mesh without the commit).
+void write_into(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+
+// MSMS's two files for a path naming either of them (or any stem).
+struct MsmsPair {
+  path vert;
+  path face;
+};
+MsmsPair msms_pair(const path& file);
+
+// What the readers get back from the lossy writers (see mesh_as_written in io.hpp).
+Mesh msms_as_read(const Mesh& mesh, const MeshWriteOptions& options);
+Mesh stl_as_read(const Mesh& mesh);
 
 Mesh read_vtp(const path& file);
 Mesh read_vtk(const path& file);

@@ -29,7 +29,7 @@ bool next_nonblank(LineReader& lines, std::vector<std::string_view>& fields) {
 
 }  // namespace
 
-void write_msh(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
+void write_msh(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions&) {
   std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(mesh.vertex_count()) + "\n";
   text.reserve(mesh.vertex_count() * 70 + mesh.face_count() * 40 + 128);
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
@@ -48,7 +48,7 @@ void write_msh(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
             std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
   }
   text += "$EndElements\n";
-  write_file_atomically(file, text);
+  files.add(file).write(text);
 }
 
 Mesh read_msh(const path& file) {

@@ -2,8 +2,12 @@
 //   NAME.vert  x y z nx ny nz face_number closest_sphere type      "%9.3f x6 %7d %7d %2d"
 //   NAME.face  v1 v2 v3 (1-based) type face_number               "%6d x3 %2d %6d"
 // each after a 3-line header (comment, column legend, "count #spheres density probe").
-// MSMS prints coordinates with 3 decimals, and tools parse that layout, so this format
-// is lossy (0.0005 A); use .vtp/.ply/.msh for exact coordinates.
+// MSMS prints coordinates with 3 decimals, so by default this format is lossy (0.0005 A).
+// Where 3 decimals would break the surface (faces that become degenerate or cross), the
+// caller asks for MeshWriteOptions::msms_decimals = kMsmsExact: each coordinate is then
+// the shortest fixed-point text that reads back as the same double, right-aligned in
+// the same 9-character column where it fits. Readers of .vert split on whitespace
+// (docs/formats.md), so the wider numbers are read correctly.
 //
 // What we put in MSMS's columns: the closest sphere is the nearest atom by |p-c|-r
 // among the atoms tagging the faces around the vertex (face tag + 1 without atoms, 0
@@ -11,6 +15,7 @@
 // lies on, 0 untagged). MSMS's type codes classify SES patches (contact, toric,
 // reentrant), which a union of atom spheres does not have: every row gets type 1.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -65,6 +70,24 @@ std::size_t sphere_count(const Mesh& mesh, std::span<const Atom> atoms) {
   return static_cast<std::size_t>(highest + 1);
 }
 
+// One coordinate as the .vert file holds it: fixed point with `decimals` decimals (or
+// the shortest exact text for kMsmsExact), right-aligned in MSMS's 9 columns.
+std::string_view vert_coordinate(double value, int decimals, char (&buffer)[400]) {
+  const auto result = decimals == kMsmsExact
+                          ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
+                          : std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+  // 400 characters hold any double in fixed point: the longest, 5e-324, takes 326.
+  return std::string_view(buffer, static_cast<std::size_t>(result.ptr - buffer));
+}
+
+void append_vert_coordinate(std::string& out, double value, int decimals) {
+  char buffer[400];
+  const std::string_view text = vert_coordinate(value, decimals, buffer);
+  constexpr std::size_t kWidth = 9;
+  if (text.size() < kWidth) out.append(kWidth - text.size(), ' ');
+  out += text;
+}
+
 template <class... Args>
 void append_formatted(std::string& out, const char* format, Args... args) {
   char buffer[160];
@@ -108,7 +131,7 @@ void for_each_row(const path& file, std::string text, const char* what, OnRow on
 
 }  // namespace
 
-void write_msms(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const PairPaths paths = pair_paths(file);
   const std::vector<Vec3> normals = vertex_normals(mesh);
   const std::vector<long long> closest = closest_spheres(mesh, options.atoms);
@@ -125,8 +148,11 @@ void write_msms(const path& file, const Mesh& mesh, const MeshWriteOptions& opti
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& p = mesh.vertices[v];
     const Vec3& n = normals[v];
-    append_formatted(vert, "%9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %7d %7lld %2d\n", p.x, p.y, p.z, n.x, n.y, n.z, 0,
-                     closest[v], kPatchType);
+    for (double c : {p.x, p.y, p.z}) {
+      append_vert_coordinate(vert, c, options.msms_decimals);
+      vert += ' ';
+    }
+    append_formatted(vert, "%9.3f %9.3f %9.3f %7d %7lld %2d\n", n.x, n.y, n.z, 0, closest[v], kPatchType);
   }
 
   std::string face;
@@ -143,13 +169,25 @@ void write_msms(const path& file, const Mesh& mesh, const MeshWriteOptions& opti
                      std::max(mesh.tag(f), kNoTag) + 1);
   }
 
-  // Both files are complete before either replaces an old one.
-  AtomicFile vert_file(paths.vert);
-  AtomicFile face_file(paths.face);
-  vert_file.write(vert);
-  face_file.write(face);
-  vert_file.commit();
-  face_file.commit();
+  // Both go into the caller's set: both are complete before either replaces an old one.
+  files.add(paths.vert).write(vert);
+  files.add(paths.face).write(face);
+}
+
+MsmsPair msms_pair(const path& file) {
+  const PairPaths paths = pair_paths(file);
+  return {paths.vert, paths.face};
+}
+
+Mesh msms_as_read(const Mesh& mesh, const MeshWriteOptions& options) {
+  Mesh rounded = mesh;
+  for (Vec3& p : rounded.vertices)
+    for (double* c : {&p.x, &p.y, &p.z}) {
+      char buffer[400];
+      const std::string_view text = vert_coordinate(*c, options.msms_decimals, buffer);
+      std::from_chars(text.data(), text.data() + text.size(), *c);  // as the reader parses it
+    }
+  return rounded;
 }
 
 Mesh read_msms(const path& file) {

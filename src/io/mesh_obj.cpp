@@ -6,7 +6,7 @@
 
 namespace molsurf::mesh_io {
 
-void write_obj(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
+void write_obj(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions&) {
   const std::vector<Vec3> normals = vertex_normals(mesh);
   std::string text = "# molsurf " MOLSURF_VERSION "\n";
   text.reserve(mesh.vertex_count() * 110 + mesh.face_count() * 40 + 64);
@@ -25,7 +25,7 @@ void write_obj(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
     }
     text += '\n';
   }
-  write_file_atomically(file, text);
+  files.add(file).write(text);
 }
 
 namespace {

@@ -8,7 +8,7 @@
 
 namespace molsurf::mesh_io {
 
-void write_off(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
+void write_off(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions&) {
   std::string text = "OFF\n" + std::to_string(mesh.vertex_count()) + " " +
                      std::to_string(mesh.face_count()) + " 0\n";
   text.reserve(text.size() + mesh.vertex_count() * 60 + mesh.face_count() * 24);
@@ -18,7 +18,7 @@ void write_off(const path& file, const Mesh& mesh, const MeshWriteOptions&) {
   }
   for (const Triangle& t : mesh.faces)
     text += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
-  write_file_atomically(file, text);
+  files.add(file).write(text);
 }
 
 namespace {

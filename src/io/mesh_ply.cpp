@@ -222,7 +222,7 @@ std::size_t find_property(const Element& element, std::initializer_list<std::str
 
 }  // namespace
 
-void write_ply(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+void write_ply(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const std::vector<Vec3> normals = vertex_normals(mesh);
   std::string out = "ply\nformat ";
   out += options.ascii ? "ascii" : "binary_little_endian";
@@ -267,7 +267,7 @@ void write_ply(const path& file, const Mesh& mesh, const MeshWriteOptions& optio
       if (mesh.has_tags()) put(out, mesh.face_tags[f]);
     }
   }
-  write_file_atomically(file, out);
+  files.add(file).write(out);
 }
 
 Mesh read_ply(const path& file) {

@@ -153,7 +153,7 @@ Mesh read_ascii_stl(const path& file, std::string bytes) {
 
 }  // namespace
 
-void write_stl(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+void write_stl(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   std::string out;
   if (options.ascii) {
     out = "solid molsurf\n";
@@ -192,7 +192,34 @@ void write_stl(const path& file, const Mesh& mesh, const MeshWriteOptions& optio
       out += std::string(2, '\0');  // attribute byte count: unused
     }
   }
-  write_file_atomically(file, out);
+  files.add(file).write(out);
+}
+
+namespace {
+
+// A double rounded to float32 and back. Not inlined on purpose: GCC 12.2 at -O2/-O3
+// vectorizes (double)(float) of two neighbouring coordinates and drops the rounding
+// (x and y came back unrounded, z rounded); a call per value keeps it scalar.
+[[gnu::noinline]] double float32_value(double value) { return static_cast<double>(static_cast<float>(value)); }
+
+}  // namespace
+
+Mesh stl_as_read(const Mesh& mesh) {
+  // What read_stl does with the facets write_stl writes: float32 corners, merged where
+  // equal, numbered in order of first use.
+  Mesh read;
+  VertexMerger merger(read);
+  read.faces.reserve(mesh.face_count());
+  for (const Triangle& t : mesh.faces) {
+    Triangle corners{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec3& p = mesh.vertices[t[k]];
+      corners[k] = merger.add({float32_value(p.x), float32_value(p.y), float32_value(p.z)});
+    }
+    read.faces.push_back(corners);
+  }
+  read.face_tags = mesh.face_tags;
+  return read;
 }
 
 Mesh read_stl(const path& file) {

@@ -128,9 +128,10 @@ vtkSmartPointer<vtkPolyData> to_polydata(const Mesh& mesh, const MeshWriteOption
 }
 
 template <class Writer>
-void write_with(vtkNew<Writer>& writer, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+void write_with(vtkNew<Writer>& writer, AtomicFileSet& files, const path& file, const Mesh& mesh,
+                const MeshWriteOptions& options) {
   const vtkSmartPointer<vtkPolyData> polydata = to_polydata(mesh, options);
-  AtomicFile output(file);
+  AtomicFile& output = files.add(file);
   vtkNew<ErrorCollector> errors;
   writer->AddObserver(vtkCommand::ErrorEvent, errors);
   writer->SetInputData(polydata);
@@ -139,7 +140,6 @@ void write_with(vtkNew<Writer>& writer, const path& file, const Mesh& mesh, cons
   if (written != 1 || writer->GetErrorCode() != 0 || !errors->messages.empty())
     fail(file, "cannot write: " + (errors->messages.empty() ? std::string("VTK writer failed")
                                                             : first_line(errors->messages)));
-  output.commit();
 }
 
 // Cell data arrays are indexed over verts, lines, polys, strips in that order.
@@ -218,21 +218,21 @@ Mesh read_with(vtkNew<Reader>& reader, const path& file) {
 
 }  // namespace
 
-void write_vtp(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+void write_vtp(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();  // raw bytes, not base64
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64();  // arrays beyond 4 GB stay readable
-  write_with(writer, file, mesh, options);
+  write_with(writer, files, file, mesh, options);
 }
 
-void write_vtk(const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
+void write_vtk(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   vtkNew<vtkPolyDataWriter> writer;
   writer->SetFileTypeToBinary();
   writer->SetFileVersion(vtkPolyDataWriter::VTK_LEGACY_READER_VERSION_4_2);
   writer->SetHeader("molsurf " MOLSURF_VERSION);
-  write_with(writer, file, mesh, options);
+  write_with(writer, files, file, mesh, options);
 }
 
 Mesh read_vtp(const path& file) {

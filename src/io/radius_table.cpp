@@ -60,15 +60,15 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
     const auto expect_fields = [&](std::size_t count, const char* form) {
       if (fields.size() != count)
         fail(source_name, line_number,
-             "'" + std::string(fields[0]) + "' line needs " + std::to_string(count - 1) +
+             detail::excerpt(fields[0]) + " line needs " + std::to_string(count - 1) +
                  " values (" + form + "), found " + std::to_string(fields.size() - 1));
     };
     const auto radius_from = [&](std::string_view field) {
       const std::optional<double> radius = detail::parse_double(field);
-      if (!radius) fail(source_name, line_number, "radius '" + std::string(field) + "' is not a number");
+      if (!radius) fail(source_name, line_number, "radius " + detail::excerpt(field) + " is not a number");
       if (*radius <= 0 || *radius > 10)
         fail(source_name, line_number,
-             "radius " + std::string(field) + " is outside (0, 10] angstrom");
+             "radius " + detail::escaped(field) + " is outside (0, 10] angstrom");
       return *radius;
     };
 
@@ -78,13 +78,13 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
       const double radius = radius_from(fields[3]);
       if (!table.by_residue_atom_.emplace(key, radius).second)
         fail(source_name, line_number,
-             "second radius for residue " + key.first + " atom " + key.second);
+             "second radius for residue " + detail::escaped(key.first) + " atom " + detail::escaped(key.second));
     } else if (kind == "ELEMENT") {
       expect_fields(3, "element SYMBOL RADIUS");
       const std::string element = upper(fields[1]);
       const double radius = radius_from(fields[2]);
       if (!table.by_element_.emplace(element, radius).second)
-        fail(source_name, line_number, "second radius for element " + element);
+        fail(source_name, line_number, "second radius for element " + detail::escaped(element));
     } else if (kind == "DEFAULT") {
       expect_fields(2, "default RADIUS");
       if (has_default) fail(source_name, line_number, "second 'default' line");
@@ -92,8 +92,8 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
       has_default = true;
     } else {
       fail(source_name, line_number,
-           "unknown line kind '" + std::string(fields[0]) +
-               "' (expected 'atom', 'element' or 'default')");
+           "unknown line kind " + detail::excerpt(fields[0]) +
+               " (expected 'atom', 'element' or 'default')");
     }
     ++entries;
   }

@@ -2,14 +2,19 @@
 // gemmi: its headers are slow to compile, and keeping them here keeps rebuilds cheap.
 // gemmi headers that pull gemmi/sprintf.hpp (to_pdb, to_mmcif, select...) must not be
 // included: Debian does not ship the stb_sprintf.h they need.
+#include <algorithm>
 #include <cctype>
+#include <climits>
+#include <cstdint>
 #include <cmath>
 #include <charconv>
 #include <exception>
 #include <string>
 #include <string_view>
 
-#include <gemmi/gz.hpp>
+#include <zlib.h>
+
+#include <gemmi/cif.hpp>
 #include <gemmi/mmread.hpp>
 
 #include "io/structure_readers.hpp"
@@ -57,9 +62,10 @@ void check_pdb_atom_records(const std::filesystem::path& path, std::string_view 
       if (field.empty() || error != std::errc() || end_ptr != field.data() + field.size() ||
           !std::isfinite(value))
         fail(path, line_number,
-             record + " record: " + axis_names[axis] + " coordinate '" + std::string(field) +
-                 "' (columns " + std::to_string(31 + 8 * axis) + "-" +
+             record + " record: " + axis_names[axis] + " coordinate " + excerpt(field) +
+                 " (columns " + std::to_string(31 + 8 * axis) + "-" +
                  std::to_string(38 + 8 * axis) + ") is not a number");
+      check_coordinate_range(path, line_number, value, record + " record: " + axis_names[axis] + " coordinate");
     }
   }
 }
@@ -80,20 +86,85 @@ std::string message_with_file(const std::filesystem::path& path, const std::stri
   return file + ": " + what;
 }
 
+bool has_gz_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".gz";
+}
+
+// The whole decompressed content of a gzip file (members concatenated, as gzip -d does).
+// Our own loop rather than gemmi's: gemmi sizes its buffer from the gzip trailer, which
+// a truncated file does not have, and then guesses aloud about sizes.
+std::string gunzip_file(const std::filesystem::path& path) {
+  const std::string compressed = read_text_file(path);
+  std::string text;
+  z_stream stream{};
+  if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) fail(path, "cannot start gzip decompression");
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
+  stream.avail_in = static_cast<uInt>(std::min<std::size_t>(compressed.size(), UINT32_MAX));
+  std::size_t fed = stream.avail_in;
+  char chunk[1 << 16];
+  int status = Z_OK;
+  while (true) {
+    stream.next_out = reinterpret_cast<Bytef*>(chunk);
+    stream.avail_out = sizeof chunk;
+    status = inflate(&stream, Z_NO_FLUSH);
+    text.append(chunk, sizeof chunk - stream.avail_out);
+    if (stream.avail_in == 0 && fed < compressed.size()) {
+      const std::size_t more = std::min<std::size_t>(compressed.size() - fed, UINT32_MAX);
+      stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data() + fed));
+      stream.avail_in = static_cast<uInt>(more);
+      fed += more;
+    }
+    if (status == Z_STREAM_END) {
+      // Another gzip member may follow; trailing zero padding is allowed as gzip allows it.
+      const std::size_t used = fed - stream.avail_in;
+      const bool more_members = used < compressed.size() && compressed[used] == '\x1f';
+      if (!more_members) break;
+      inflateReset(&stream);
+      continue;
+    }
+    if (status != Z_OK) break;  // with fresh output space, Z_BUF_ERROR means the input ran out
+
+  }
+  inflateEnd(&stream);
+  if (status == Z_STREAM_END) return text;
+  if (status == Z_BUF_ERROR)
+    fail(path, "truncated gzip file: the compressed data ends early (after " + std::to_string(text.size()) +
+                   " bytes of text); download it again");
+  fail(path, "corrupt gzip data (" + std::string(stream.msg ? stream.msg : "zlib error " + std::to_string(status)) +
+                 ")");
+}
+
+// mmCIF without coordinates (a dictionary, a restraint file, a model without _atom_site
+// coordinates) reads as a structure with no atoms; say what is missing instead.
+void check_mmcif_coordinates(const std::filesystem::path& path, gemmi::cif::Document& document) {
+  if (document.blocks.empty()) fail(path, "no data block: not an mmCIF file");
+  gemmi::cif::Block& block = document.blocks.front();
+  if (!block.find_values("_atom_site.group_PDB") && !block.find_values("_atom_site.id") &&
+      !block.find_values("_atom_site.type_symbol") && !block.find_values("_atom_site.Cartn_x"))
+    fail(path, "no _atom_site table in data block '" + block.name + "': the file has no atoms");
+  for (const char* tag : {"_atom_site.Cartn_x", "_atom_site.Cartn_y", "_atom_site.Cartn_z"})
+    if (!block.find_values(tag))
+      fail(path, std::string("the _atom_site table has no ") + tag +
+                     " column: no Cartesian coordinates (fractional-only or incomplete files are not read)");
+}
+
 }  // namespace
 
 ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
                              std::optional<int> model) {
   gemmi::Structure structure;
   try {
-    gemmi::MaybeGzipped input(path.string());
-    gemmi::CharArray buffer = gemmi::read_into_buffer(input);
+    const std::string buffer = has_gz_extension(path) ? gunzip_file(path) : read_text_file(path);
+    if (buffer.empty()) fail(path, "file is empty");
     if (format == StructureFormat::pdb) {
-      check_pdb_atom_records(path, std::string_view(buffer.data(), buffer.size()));
+      check_pdb_atom_records(path, buffer);
       structure = gemmi::read_pdb_from_memory(buffer.data(), buffer.size(), path.string());
     } else {
-      structure = gemmi::make_structure(
-          gemmi::cif::read_memory(buffer.data(), buffer.size(), path.string().c_str()));
+      gemmi::cif::Document document = gemmi::cif::read_memory(buffer.data(), buffer.size(), path.string().c_str());
+      check_mmcif_coordinates(path, document);
+      structure = gemmi::make_structure(std::move(document));
     }
   } catch (const Error&) {
     throw;
@@ -124,6 +195,11 @@ ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat 
           fail(path, "atom " + std::to_string(atom.serial) + " (" + residue.name + " " +
                          std::to_string(residue.seqid.num.value) + " " + atom.name + ", chain " +
                          chain.name + ") has no valid coordinates");
+        for (double c : {a.centre.x, a.centre.y, a.centre.z})
+          check_coordinate_range(path, 0, c,
+                                 "atom " + std::to_string(atom.serial) + " (" + residue.name + " " +
+                                     std::to_string(residue.seqid.num.value) + " " + atom.name + ", chain " +
+                                     chain.name + "): coordinate");
         a.atom_name = atom.name;
         a.residue_name = residue.name;
         a.element = atom.element == gemmi::El::X ? infer_element(atom.name, residue.name)

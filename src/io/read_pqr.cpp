@@ -72,7 +72,7 @@ ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> mode
     const std::size_t number_field = has_chain ? 5 : 4;
     const auto field_error = [&](const std::string& what, std::string_view value) {
       fail(path, line_number,
-           record + " record: " + what + " '" + std::string(value) + "' is not a number");
+           record + " record: " + what + " " + excerpt(value) + " is not a number");
     };
 
     if (!current_model) {
@@ -92,8 +92,8 @@ ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> mode
     const std::optional<ResidueNumber> residue = parse_residue_number(fields[number_field]);
     if (!residue)
       fail(path, line_number,
-           record + " record: residue number '" + std::string(fields[number_field]) +
-               "' is not a number" +
+           record + " record: residue number " + excerpt(fields[number_field]) +
+               " is not a number" +
                (has_chain ? std::string()
                           : " (is a column missing? PQR expects " + record +
                                 " serial name residue [chain] number x y z charge radius)"));
@@ -108,8 +108,10 @@ ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> mode
       if (!value) field_error(value_names[i], field);
       values[i] = *value;
     }
+    for (std::size_t i : {0, 1, 2, 4})
+      check_coordinate_range(path, line_number, values[i], record + " record: " + value_names[i]);
     if (values[4] < 0)
-      fail(path, line_number, record + " record: negative radius " + std::string(fields[number_field + 5]));
+      fail(path, line_number, record + " record: negative radius " + excerpt(fields[number_field + 5]));
     atom.centre = {values[0], values[1], values[2]};
     atom.charge = values[3];
     atom.radius = values[4];

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -81,6 +82,33 @@ std::string infer_element(std::string_view atom_name, std::string_view residue_n
                                                                 "NI", "CL", "BR", "SE"};
   if (two_letter.contains(letters)) return letters;
   return std::string(1, letters.front());  // H, D (deuterium), C, N, O, S, P...
+}
+
+std::string excerpt(std::string_view field) { return "'" + escaped(field) + "'"; }
+
+std::string escaped(std::string_view field) {
+  constexpr std::size_t kMaxShown = 24;
+  std::string text;
+  for (std::size_t i = 0; i < field.size() && i < kMaxShown; ++i) {
+    const unsigned char c = static_cast<unsigned char>(field[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      text += static_cast<char>(c);
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      text += hex;
+    }
+  }
+  if (field.size() > kMaxShown) text += "...";
+  return text;
+}
+
+void check_coordinate_range(const std::filesystem::path& path, std::size_t line, double value,
+                            const std::string& what) {
+  if (std::abs(value) < kMaxCoordinate) return;
+  char text[40];
+  std::snprintf(text, sizeof text, "%g", value);
+  fail(path, line, what + " " + text + " is out of range (its magnitude must be below 1e16 angstrom)");
 }
 
 void fail_unknown_model(const std::filesystem::path& path, int requested,

@@ -27,11 +27,12 @@ std::vector<Atom> read_xyzr(const std::filesystem::path& path) {
       const std::optional<double> value = parse_double(fields[i]);
       if (!value)
         fail(path, line_number,
-             std::string(value_names[i]) + " '" + std::string(fields[i]) + "' is not a number");
+             std::string(value_names[i]) + " " + excerpt(fields[i]) + " is not a number");
       values[i] = *value;
     }
+    for (std::size_t i = 0; i < 4; ++i) check_coordinate_range(path, line_number, values[i], value_names[i]);
     if (values[3] <= 0)
-      fail(path, line_number, "radius must be positive, found " + std::string(fields[3]));
+      fail(path, line_number, "radius must be positive, found " + escaped(fields[3]));
     Atom atom;
     atom.centre = {values[0], values[1], values[2]};
     atom.radius = values[3];

@@ -167,7 +167,7 @@ std::string surface_report_json(const SurfaceReport& r) {
   return j.str();
 }
 
-void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area) {
+std::string per_atom_csv(std::span<const Atom> atoms, std::span<const double> area) {
   std::string csv = "index,serial,chain,residue_name,residue_number,insertion_code,atom_name,element,radius,area\n";
   char line[256];
   for (std::size_t i = 0; i < atoms.size(); ++i) {
@@ -177,11 +177,14 @@ void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom>
                   a.atom_name.c_str(), a.element.c_str(), a.radius, area[i]);
     csv += line;
   }
-  write_file_atomically(path, csv);
+  return csv;
 }
 
-void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
-                           std::span<const double> area) {
+void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area) {
+  write_file_atomically(path, per_atom_csv(atoms, area));
+}
+
+std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area) {
   // Residues in order of first appearance.
   using Key = std::tuple<std::string, int, char, std::string>;
   std::map<Key, std::size_t> index;
@@ -207,7 +210,12 @@ void write_per_residue_csv(const std::filesystem::path& path, std::span<const At
                   std::get<1>(key), icode == ' ' ? '_' : icode, atoms_in[k], a);
     csv += line;
   }
-  write_file_atomically(path, csv);
+  return csv;
+}
+
+void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
+                           std::span<const double> area) {
+  write_file_atomically(path, per_residue_csv(atoms, area));
 }
 
 }  // namespace molsurf

@@ -1,7 +1,14 @@
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
+#include <string>
 
+#include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
+#include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 
 namespace molsurf {
@@ -34,6 +41,98 @@ SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& option
     plan.vertices += 10 * n * n + 2;
   }
   return plan;
+}
+
+namespace {
+
+constexpr double kSaturated = 1.8e19;  // just below 2^64
+
+// 20 n^2 faces of the atom's icosphere, in double so that no frequency overflows.
+double sphere_faces(const Atom& atom, const SphereOptions& options) {
+  double n = options.frequency;
+  if (options.frequency <= 0) {
+    const double r = sphere_radius(atom, options);
+    const double target = options.density * 4 * std::numbers::pi * r * r;
+    n = std::sqrt(std::max(0.0, target - 2) / 10);
+    // Within int range frequency_for_density decides exactly (it rounds to the nearest).
+    if (n < 1e6) n = sphere_frequency(atom, options);
+  }
+  return 20 * std::max(1.0, n) * std::max(1.0, n);
+}
+
+std::uint64_t saturate(double value) {
+  return value >= kSaturated || !std::isfinite(value) ? std::numeric_limits<std::uint64_t>::max()
+                                                      : static_cast<std::uint64_t>(value);
+}
+
+std::string count(std::uint64_t value) {
+  if (value == std::numeric_limits<std::uint64_t>::max()) return "more than 1.8e19";
+  char text[32];
+  if (value >= 10'000'000) std::snprintf(text, sizeof text, "%.3g", static_cast<double>(value));
+  else std::snprintf(text, sizeof text, "%llu", static_cast<unsigned long long>(value));
+  return text;
+}
+
+std::string gigabytes(std::uint64_t bytes) {
+  if (bytes == std::numeric_limits<std::uint64_t>::max()) return "more than 1e10 GB";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g GB", static_cast<double>(bytes) / 1e9);
+  return text;
+}
+
+std::string describe(const Atom& atom, std::size_t index) {
+  std::string text = "atom " + std::to_string(index + 1);
+  if (atom.serial != 0) text += " (serial " + std::to_string(atom.serial);
+  else text += " (";
+  if (!atom.residue_name.empty() || !atom.atom_name.empty()) {
+    text += atom.serial != 0 ? ", " : "";
+    text += atom.atom_name;
+    if (!atom.residue_name.empty())
+      text += " of " + atom.residue_name + " " + std::to_string(atom.residue_number) +
+              (atom.chain.empty() ? "" : " chain " + atom.chain);
+  }
+  text += ")";
+  if (text.ends_with(" ()")) text.resize(text.size() - 3);
+  return text;
+}
+
+}  // namespace
+
+ResourceEstimate estimate_resources(std::span<const Atom> atoms, const SphereOptions& options) {
+  double total = 0, largest = 0;
+  for (const Atom& atom : atoms) {
+    const double faces = sphere_faces(atom, options);
+    total += faces;
+    largest = std::max(largest, faces);
+  }
+  return {saturate(total), saturate(largest), saturate(total * static_cast<double>(kBytesPerSphereFace))};
+}
+
+void check_sphere_resources(const std::filesystem::path& input, std::span<const Atom> atoms,
+                            const SphereOptions& options, std::uint64_t max_faces) {
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    const double r = sphere_radius(atoms[i], options);
+    if (!(r > 0) || !std::isfinite(r)) {
+      char radius[32];
+      std::snprintf(radius, sizeof radius, "%g", atoms[i].radius);
+      fail(input, describe(atoms[i], i) + " has radius " + radius +
+                      (options.probe == 0 ? ", and with --probe 0 its sphere is a point, which has no surface; "
+                                            "give it a positive radius or use a probe radius above 0"
+                                          : ": its sphere radius (radius + probe) must be positive and finite"));
+    }
+  }
+  const ResourceEstimate estimate = estimate_resources(atoms, options);
+  char settings[96];
+  std::snprintf(settings, sizeof settings, "--density %g and --probe %g", options.density, options.probe);
+  const std::string how = options.frequency > 0 ? "--frequency " + std::to_string(options.frequency) : settings;
+  if (estimate.largest_sphere > kMaxFacesPerSphere)
+    fail(input, "one sphere would have " + count(estimate.largest_sphere) + " faces with " + how +
+                    ", more than the finest sphere allowed (" + count(kMaxFacesPerSphere) +
+                    " faces, --frequency 200); lower --density, or check the radii and --probe");
+  if (estimate.sphere_faces > max_faces)
+    fail(input, "the spheres would have " + count(estimate.sphere_faces) + " faces before the union with " + how +
+                    " (about " + gigabytes(estimate.bytes) + " of memory), more than the limit of " +
+                    count(max_faces) + "; lower --density or use --frequency, or raise the limit with --max-faces");
 }
 
 }  // namespace molsurf

@@ -1,0 +1,60 @@
+#pragma once
+// The files one run writes: a surface and its reports. They are checked before any work
+// (so `--json input.pdb` fails at once, not after the surface), written to temporaries
+// beside their targets, and replaced together only when every one is complete: a run
+// that fails leaves every old file as it was, and a run that succeeds replaces them all.
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "molsurf/io.hpp"
+#include "molsurf/mesh.hpp"
+
+namespace molsurf {
+
+class AtomicFileSet;
+
+// "-" as an output path: standard output (reports only).
+inline constexpr const char* kStandardOutput = "-";
+
+struct OutputRequest {
+  std::filesystem::path path;
+  std::string option;    // how the user named it, for messages: "-o", "--json"
+  bool is_mesh = false;  // a mesh: never "-"; MSMS's .face partner is an output too
+};
+
+// Throws molsurf::Error unless every output can be written without harming anything:
+// a non-empty name; "-" only for a report, and for one output at most; not the same file
+// as an input or another output (compared as canonical paths, and by device and inode for
+// files that exist, so "./x", symbolic and hard links count); not a symbolic link,
+// directory, device, pipe or socket; in a directory that exists.
+void check_output_paths(std::span<const std::filesystem::path> inputs, std::span<const OutputRequest> outputs);
+
+class OutputFiles {
+ public:
+  OutputFiles();
+  ~OutputFiles();
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+
+  // Written to temporaries now; nothing replaces its target before commit().
+  void add_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshWriteOptions& options);
+  void add_text(const std::filesystem::path& path, std::string content);  // "-": standard output
+
+  // Replaces every target (then prints what goes to standard output) and returns the
+  // files written, in order. On failure throws molsurf::Error naming what was written
+  // and what was not.
+  std::vector<std::filesystem::path> commit();
+
+ private:
+  std::unique_ptr<AtomicFileSet> files_;
+  std::vector<std::string> standard_output_;
+};
+
+// Removes the temporaries of unfinished writes when SIGINT, SIGTERM or SIGHUP ends the
+// process. For programs (the molsurf command): a library does not take signals itself.
+void remove_temporaries_on_signals();
+
+}  // namespace molsurf

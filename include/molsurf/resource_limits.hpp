@@ -1,0 +1,42 @@
+#pragma once
+// What a surface will cost, known before any sphere is built, and the limit that keeps a
+// typo (--density 1e6, --probe 3e4, a 1000 A radius) from running the machine out of
+// memory: the estimate is refused plainly, and a flag raises the limit.
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/surface.hpp"
+
+namespace molsurf {
+
+// Peak memory per sphere face before the union, measured on the capsid (1f2n, 253 M
+// sphere faces at density 4: 6 GB at probe 1.4, 18.7 GB at probe 0; docs/performance.md),
+// rounded up.
+inline constexpr std::uint64_t kBytesPerSphereFace = 80;
+// Default --max-faces: above the largest documented run (the capsid at density 4).
+inline constexpr std::uint64_t kDefaultMaxSphereFaces = 300'000'000;
+// No sphere may be finer than --frequency allows (n = 200: 800 000 faces). At density 2
+// an atom gets n = 5 to 8; a sphere beyond this is a unit or radius error (a 1000 A
+// radius at density 2 has 50 M faces and ran out of 24 GB on its own), not a surface
+// anyone needs.
+inline constexpr std::uint64_t kMaxFacesPerSphere = 20 * 200 * 200;
+
+struct ResourceEstimate {
+  std::uint64_t sphere_faces = 0;    // all icospheres' faces, saturating (never wraps)
+  std::uint64_t largest_sphere = 0;  // faces of the largest one
+  std::uint64_t bytes = 0;           // peak memory estimate, saturating
+};
+
+// Overflow-safe: a frequency too large for an int is estimated in floating point.
+ResourceEstimate estimate_resources(std::span<const Atom> atoms, const SphereOptions& options);
+
+// Throws molsurf::Error naming `input` unless every sphere can be built: radius + probe
+// positive and finite (a zero-radius atom with --probe 0 is named with its serial and
+// residue), the sphere's faces within kMaxFacesPerSphere, and all spheres' faces within
+// `max_faces` (the message gives the estimate, the memory, and the flag that raises it).
+void check_sphere_resources(const std::filesystem::path& input, std::span<const Atom> atoms,
+                            const SphereOptions& options, std::uint64_t max_faces);
+
+}  // namespace molsurf

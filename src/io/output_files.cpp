@@ -1,0 +1,122 @@
+#include "molsurf/output_files.hpp"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+
+#include "io/atomic_file.hpp"
+#include "io/mesh_formats.hpp"
+#include "io/temporary_registry.hpp"
+#include "molsurf/error.hpp"
+
+namespace molsurf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A file's identity: canonical path, plus device and inode when it exists.
+struct Identity {
+  fs::path canonical;
+  std::optional<std::pair<dev_t, ino_t>> node;
+};
+
+Identity identify(const fs::path& path) {
+  Identity id;
+  std::error_code error;
+  id.canonical = fs::weakly_canonical(path, error);
+  if (error) id.canonical = fs::absolute(path, error).lexically_normal();
+  struct stat status {};
+  if (::stat(path.c_str(), &status) == 0) id.node = std::pair{status.st_dev, status.st_ino};
+  return id;
+}
+
+bool same_file(const Identity& a, const Identity& b) {
+  if (a.node && b.node) return *a.node == *b.node;
+  return a.canonical == b.canonical;
+}
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+}  // namespace
+
+void check_output_paths(std::span<const fs::path> inputs, std::span<const OutputRequest> outputs) {
+  struct Named {
+    fs::path path;
+    std::string what;  // "the output of -o", "the input"
+    Identity id;
+  };
+  std::vector<Named> taken;
+  for (const fs::path& input : inputs)
+    if (!input.empty()) taken.push_back({input, "an input file", identify(input)});
+
+  const OutputRequest* standard_output = nullptr;
+  for (const OutputRequest& request : outputs) {
+    if (request.path.empty())
+      throw Error(request.option + " '': an empty file name; name the file to write");
+    if (request.path == kStandardOutput) {
+      if (request.is_mesh)
+        throw Error(request.option + " -: a surface cannot go to standard output (its format follows the file "
+                    "extension); name a file");
+      if (standard_output)
+        throw Error(standard_output->option + " and " + request.option +
+                    " both write to standard output ('-'); give one of them a file");
+      standard_output = &request;
+      continue;
+    }
+    const std::vector<fs::path> files = request.is_mesh ? mesh_output_files(request.path)
+                                                        : std::vector<fs::path>{request.path};
+    for (const fs::path& file : files) {
+      const std::string role = file == request.path
+                                   ? "the output of " + request.option
+                                   : "the " + file.extension().string() + " file written with " + request.option +
+                                         " " + request.path.string();
+      const Identity id = identify(file);
+      for (const Named& other : taken)
+        if (same_file(id, other.id))
+          throw Error(request.option + " " + quoted(request.path) + ": " +
+                      (file == request.path ? std::string("this") : quoted(file)) + " is " + other.what +
+                      (other.path != file ? " (" + quoted(other.path) + ")" : std::string()) +
+                      "; refusing to overwrite it: give each output its own file");
+      check_replaceable(file);
+      const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+      std::error_code error;
+      if (!fs::is_directory(directory, error))
+        fail(file, "cannot write: directory " + quoted(directory) + " does not exist");
+      taken.push_back({file, role, id});
+    }
+  }
+}
+
+OutputFiles::OutputFiles() : files_(std::make_unique<AtomicFileSet>()) {}
+OutputFiles::~OutputFiles() = default;
+
+void OutputFiles::add_mesh(const fs::path& path, const Mesh& mesh, const MeshWriteOptions& options) {
+  mesh_io::write_into(*files_, path, mesh, options);
+}
+
+void OutputFiles::add_text(const fs::path& path, std::string content) {
+  if (path == kStandardOutput) {
+    standard_output_.push_back(std::move(content));
+    return;
+  }
+  files_->add(path).write(content);
+}
+
+std::vector<fs::path> OutputFiles::commit() {
+  files_->commit();
+  for (const std::string& text : standard_output_) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+  }
+  std::fflush(stdout);
+  std::vector<fs::path> written = files_->targets();
+  if (!standard_output_.empty()) written.emplace_back("(standard output)");
+  return written;
+}
+
+void remove_temporaries_on_signals() { detail::remove_temporaries_on_signals(); }
+
+}  // namespace molsurf
