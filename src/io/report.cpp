@@ -1,5 +1,6 @@
 #include "molsurf/report.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -107,8 +108,8 @@ std::string format_sphere_plan(const SpherePlan& plan, const SphereOptions& opti
   std::string freq;
   for (const auto& [n, count] : plan.atoms_by_frequency) {
     if (!freq.empty()) freq += ", ";
-    freq += std::to_string(count) + " atoms at n=" + std::to_string(n) + " (" + std::to_string(20 * n * n) +
-            " faces)";
+    const std::uint64_t faces = 20 * static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n);  // 64-bit
+    freq += std::to_string(count) + " atoms at n=" + std::to_string(n) + " (" + std::to_string(faces) + " faces)";
   }
   t.row("icospheres", freq);
   t.row("sphere faces", std::to_string(plan.faces) + " before the union");
