@@ -7,7 +7,9 @@
 //    decompressed size is at most kMaxCompressionRatio times the compressed one (deflate
 //    cannot do better than about 1032:1);
 //  - the Piece's counts fit in what the file can hold: at most that many bytes of data
-//    (after decompression), a point taking at least 12 bytes and a cell at least 1.
+//    (after decompression), a point taking at least 12 bytes and a cell at least 1;
+//  - every data array names a known type (VTK divides by its word size), no array's
+//    components times tuples exceed the data, and points have 3 components.
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
@@ -113,6 +115,15 @@ class Guard {
       largest_count = std::max(largest_count, cells);
     }
 
+    // Points have 3 components; VTK refuses other counts but leaks on that path.
+    for (std::size_t at = xml.find("<Points"); at != std::string_view::npos; at = xml.find("<Points", at + 1)) {
+      const std::size_t array = xml.find("<DataArray", at);
+      if (array == std::string_view::npos) continue;
+      const std::string_view tag = tag_at(xml, array);
+      if (attribute(tag, "NumberOfComponents").value_or("1") != "3")
+        fail(file_, "Points array does not have 3 components");
+    }
+
     // Every array is allocated as tuples x components before its data is read.
     for (const std::string_view tag : array_tags(xml)) {
       const std::uint64_t components =
@@ -179,7 +190,7 @@ class Guard {
       fail(file_, "damaged appended data header: " + std::to_string(blocks) + " blocks");
     const std::uint64_t block_size = header_word(at + header_size_);
     const std::uint64_t last_size = header_word(at + 2 * header_size_);
-    if (blocks > 0 && (block_size == 0 || last_size > block_size))
+    if ((blocks > 0 && block_size == 0) || last_size > block_size)
       fail(file_, "damaged appended data header: block size " + std::to_string(block_size) + ", last block " +
                       std::to_string(last_size));
     std::uint64_t compressed = 0;
@@ -190,9 +201,11 @@ class Guard {
     }
     const std::uint64_t header = (3 + blocks) * header_size_;
     if (compressed > left - header) fail(file_, "truncated: compressed appended data runs past the end of the file");
-    if (blocks == 0) return 0;
+    // VTK allocates a block of block_size even for an empty array: bound it in any case.
     const std::uint64_t limit = (compressed + 64) * kMaxCompressionRatio;
-    if (block_size > limit || blocks - 1 > (limit - block_size) / block_size)
+    if (block_size > limit) fail(file_, "damaged appended data header: block size " + std::to_string(block_size));
+    if (blocks == 0) return 0;
+    if (blocks - 1 > (limit - block_size) / block_size)
       fail(file_, "damaged appended data header: " + std::to_string(blocks) + " blocks of " +
                       std::to_string(block_size) + " bytes from " + std::to_string(compressed) + " compressed bytes");
     const std::uint64_t total = (blocks - 1) * block_size + (last_size == 0 ? block_size : last_size);
