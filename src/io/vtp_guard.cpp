@@ -190,7 +190,8 @@ class Guard {
       fail(file_, "damaged appended data header: " + std::to_string(blocks) + " blocks");
     const std::uint64_t block_size = header_word(at + header_size_);
     const std::uint64_t last_size = header_word(at + 2 * header_size_);
-    if ((blocks > 0 && block_size == 0) || last_size > block_size)
+    // An empty array has no last block either: VTK would read block -1 for it.
+    if ((blocks > 0 && block_size == 0) || last_size > block_size || (blocks == 0 && last_size != 0))
       fail(file_, "damaged appended data header: block size " + std::to_string(block_size) + ", last block " +
                       std::to_string(last_size));
     std::uint64_t compressed = 0;
