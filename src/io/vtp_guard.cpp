@@ -84,7 +84,11 @@ class Guard {
       const std::string_view type = attribute(tag, "type").value_or("");
       if (std::find(std::begin(kTypes), std::end(kTypes), type) == std::end(kTypes))
         fail(file_, "data array without a known type ('" + std::string(type.substr(0, 20)) + "')");
-      if (attribute(tag, "format").value_or("") != "appended") continue;
+      const std::string_view format = attribute(tag, "format").value_or("");
+      if (format != "ascii" && format != "binary" && format != "appended")
+        fail(file_, "data array without a known format ('" + std::string(format.substr(0, 20)) + "')");
+      if (format == "binary") check_inline_binary(xml, tag);
+      if (format != "appended") continue;
       if (data_start == std::string::npos) fail(file_, "appended DataArray but no <AppendedData>");
       if (appended_base64_) {
         payload += bytes_.size() - data_start;
@@ -137,6 +141,61 @@ class Guard {
   }
 
  private:
+  // Inline binary: base64 text inside the element, the header its own base64 stream
+  // (3 header words, then one compressed size per block, when compressed; one byte count
+  // otherwise). The sizes it declares must fit in the text.
+  void check_inline_binary(std::string_view xml, std::string_view tag) const {
+    const std::size_t begin = static_cast<std::size_t>(tag.data() - xml.data()) + tag.size() + 1;
+    const std::size_t end = std::min(xml.find('<', begin), xml.size());
+    std::string text;
+    for (std::size_t i = begin; i < end; ++i)
+      if (xml[i] != ' ' && xml[i] != '\n' && xml[i] != '\r' && xml[i] != '\t') text += xml[i];
+    const std::uint64_t limit = (text.size() + 64) * kMaxCompressionRatio;
+    const std::string first = decode_base64(text, compressed_ ? 3 * header_size_ : header_size_);
+    if (first.size() < (compressed_ ? 3 : 1) * header_size_) fail(file_, "truncated: inline binary array header");
+    const auto word = [&](const std::string& bytes, std::size_t k) {
+      std::uint64_t value = 0;
+      for (std::size_t b = 0; b < header_size_; ++b)
+        value = (value << 8) | static_cast<unsigned char>(bytes[k * header_size_ + (big_endian_ ? b : header_size_ - 1 - b)]);
+      return value;
+    };
+    if (!compressed_) {
+      if (word(first, 0) > text.size()) fail(file_, "inline binary array declares more bytes than it holds");
+      return;
+    }
+    const std::uint64_t blocks = word(first, 0), block_size = word(first, 1), last_size = word(first, 2);
+    if (blocks > text.size() / header_size_ || block_size > limit || last_size > block_size ||
+        (blocks > 0 && block_size == 0) || (blocks == 0 && last_size != 0) ||
+        (blocks > 0 && blocks - 1 > (limit - block_size) / block_size))
+      fail(file_, "damaged inline binary array header");
+    const std::string header = decode_base64(text, static_cast<std::size_t>((3 + blocks) * header_size_));
+    if (header.size() < (3 + blocks) * header_size_) fail(file_, "truncated: inline binary array header");
+    std::uint64_t compressed = 0;
+    for (std::uint64_t b = 0; b < blocks; ++b) compressed += word(header, static_cast<std::size_t>(3 + b));
+    if (compressed > text.size()) fail(file_, "inline binary array declares more compressed bytes than it holds");
+  }
+
+  // The first `count` bytes of the base64 text (fewer if it ends or pads before).
+  static std::string decode_base64(std::string_view text, std::size_t count) {
+    std::string out;
+    std::uint32_t bits = 0;
+    int have = 0;
+    for (const char c : text) {
+      if (out.size() >= count) break;
+      int v = c >= 'A' && c <= 'Z' ? c - 'A' : c >= 'a' && c <= 'z' ? c - 'a' + 26 : c >= '0' && c <= '9' ? c - '0' + 52
+              : c == '+' ? 62 : c == '/' ? 63 : -1;
+      if (v < 0) break;
+      bits = (bits << 6) | static_cast<std::uint32_t>(v);
+      have += 6;
+      if (have >= 8) {
+        have -= 8;
+        out += static_cast<char>((bits >> have) & 0xffu);
+      }
+    }
+    if (out.size() > count) out.resize(count);
+    return out;
+  }
+
   // The start tags of every data array: <DataArray ...> and (strings) <Array ...>.
   std::vector<std::string_view> array_tags(std::string_view xml) const {
     std::vector<std::string_view> tags;
