@@ -77,6 +77,7 @@ class Guard {
 
     // Every appended array's header first: it also bounds the data the Piece can describe.
     std::uint64_t payload = xml.size();  // inline (ASCII, base64) data is at most this long
+    std::vector<std::pair<std::string_view, std::uint64_t>> appended_sizes;  // tag, decompressed bytes
     for (const std::string_view tag : array_tags(xml)) {
       // VTK divides by the word size of the type: an unknown or missing type must not reach it.
       static constexpr std::string_view kTypes[] = {"Int8",  "UInt8",  "Int16",   "UInt16",  "Int32", "UInt32",
@@ -95,10 +96,13 @@ class Guard {
         continue;  // base64 headers are decoded by VTK; their size is bounded by the file
       }
       const std::uint64_t offset = number(attribute(tag, "offset"), "DataArray offset");
-      payload += array_size(data_start, offset);
+      const std::uint64_t size = array_size(data_start, offset);
+      payload += size;
+      appended_sizes.push_back({tag, size});
     }
 
     std::uint64_t largest_count = 1;  // tuples of any array: points or cells
+    std::uint64_t point_count = 0, cell_count = 0;
     for (std::size_t at = xml.find("<Piece"); at != std::string_view::npos; at = xml.find("<Piece", at + 1)) {
       const std::string_view tag = tag_at(xml, at);
       if (const auto points = attribute(tag, "NumberOfPoints"); points) {
@@ -107,6 +111,7 @@ class Guard {
           fail(file_, "NumberOfPoints=\"" + std::string(points->substr(0, 20)) +
                           "\" is more than the file's data can hold");
         largest_count = std::max(largest_count, count);
+        point_count = count;
       }
       std::uint64_t cells = 0;
       for (const char* kind : {"NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"})
@@ -117,7 +122,39 @@ class Guard {
           cells += n;
         }
       largest_count = std::max(largest_count, cells);
+      cell_count = cells;
     }
+
+    // A numeric point or cell array holds exactly one tuple per point (cell): VTK 9.1
+    // sizes its arrays by the Piece's counts and then reads what the data holds (string
+    // arrays past their end). Checked for appended arrays of a single piece, whose
+    // decompressed size the headers give.
+    if (xml.find("<Piece") == xml.rfind("<Piece"))
+      for (const auto& [tag, size] : appended_sizes) {
+        const std::size_t at = static_cast<std::size_t>(tag.data() - xml.data());
+        std::size_t section_at = 0;
+        std::string_view section;
+        for (const std::string_view name : {std::string_view("<PointData"), std::string_view("<CellData"),
+                                            std::string_view("<Points"), std::string_view("<Verts"),
+                                            std::string_view("<Lines"), std::string_view("<Strips"),
+                                            std::string_view("<Polys"), std::string_view("<FieldData")}) {
+          const std::size_t found = xml.rfind(name, at);
+          if (found != std::string_view::npos && found >= section_at) {
+            section_at = found;
+            section = name;
+          }
+        }
+        const bool per_point = section == "<PointData" || section == "<Points";
+        if (!per_point && section != "<CellData") continue;
+        const std::string_view type = attribute(tag, "type").value_or("");
+        const std::size_t word = type.ends_with("64") ? 8 : type.ends_with("32") ? 4 : type.ends_with("16") ? 2 : 1;
+        if (type == "String" || type == "Bit") continue;
+        const std::uint64_t components =
+            attribute(tag, "NumberOfComponents") ? number(attribute(tag, "NumberOfComponents"), "NumberOfComponents") : 1;
+        if (size != (per_point ? point_count : cell_count) * components * word)
+          fail(file_, "array '" + std::string(attribute(tag, "Name").value_or("").substr(0, 30)) + "' holds " +
+                          std::to_string(size) + " bytes, not one value per " + (per_point ? "point" : "cell"));
+      }
 
     // Points have 3 components; VTK refuses other counts but leaks on that path.
     for (std::size_t at = xml.find("<Points"); at != std::string_view::npos; at = xml.find("<Points", at + 1)) {
