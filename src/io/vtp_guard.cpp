@@ -11,6 +11,7 @@
 //  - every data array names a known type (VTK divides by its word size), no array's
 //    components times tuples exceed the data, and points have 3 components.
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <optional>
@@ -68,6 +69,7 @@ class Guard {
       ++data_start;
     }
 
+    check_element_names(xml);
     const std::size_t file_tag = xml.find("<VTKFile");
     if (file_tag == std::string_view::npos) fail(file_, "not a VTK XML file (no <VTKFile> element)");
     const std::string_view vtk_file = tag_at(xml, file_tag);
@@ -178,6 +180,27 @@ class Guard {
   }
 
  private:
+  // Only the elements a PolyData file has: a damaged name ("<DataAr ...") makes VTK 9.1
+  // look for the array elsewhere and read sizes the checks here never saw.
+  void check_element_names(std::string_view xml) const {
+    static constexpr std::string_view kNames[] = {
+        "VTKFile",  "PolyData", "Piece",     "PointData", "CellData",     "Points", "Verts",
+        "Lines",    "Strips",   "Polys",     "DataArray", "Array",        "FieldData", "AppendedData",
+        "InformationKey", "Value", "Information"};
+    for (std::size_t at = xml.find('<'); at != std::string_view::npos; at = xml.find('<', at + 1)) {
+      std::size_t p = at + 1;
+      if (p < xml.size() && (xml[p] == '/' || xml[p] == '?' || xml[p] == '!')) {
+        if (xml[p] != '/') continue;  // declarations and comments
+        ++p;
+      }
+      std::size_t end = p;
+      while (end < xml.size() && (std::isalnum(static_cast<unsigned char>(xml[end])) || xml[end] == '_')) ++end;
+      const std::string_view name = xml.substr(p, end - p);
+      if (std::find(std::begin(kNames), std::end(kNames), name) == std::end(kNames))
+        fail(file_, "unexpected XML element '<" + std::string(name.substr(0, 30)) + "'");
+    }
+  }
+
   // Inline binary: base64 text inside the element, the header its own base64 stream
   // (3 header words, then one compressed size per block, when compressed; one byte count
   // otherwise). The sizes it declares must fit in the text.
