@@ -158,6 +158,24 @@ class Guard {
                           std::to_string(size) + " bytes, not one value per " + (per_point ? "point" : "cell"));
       }
 
+    // Each cell section holds its "connectivity" and "offsets" arrays: without one VTK 9.1
+    // reads sizes from elsewhere.
+    for (const std::string_view section : {std::string_view("Verts"), std::string_view("Lines"),
+                                           std::string_view("Strips"), std::string_view("Polys")}) {
+      const std::string open = "<" + std::string(section), close = "</" + std::string(section);
+      for (std::size_t at = xml.find(open); at != std::string_view::npos; at = xml.find(open, at + 1)) {
+        const std::size_t end = std::min(xml.find(close, at), xml.size());
+        bool connectivity = false, offsets = false;
+        for (const std::string_view tag : array_tags(xml.substr(at, end - at))) {
+          const std::string_view name = attribute(tag, "Name").value_or("");
+          connectivity = connectivity || name == "connectivity";
+          offsets = offsets || name == "offsets";
+        }
+        if (!connectivity || !offsets)
+          fail(file_, "<" + std::string(section) + "> lacks its 'connectivity' or 'offsets' array");
+      }
+    }
+
     // Points have 3 components; VTK refuses other counts but leaks on that path.
     for (std::size_t at = xml.find("<Points"); at != std::string_view::npos; at = xml.find("<Points", at + 1)) {
       const std::size_t array = xml.find("<DataArray", at);
