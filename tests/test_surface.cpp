@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "boolean_invariants.hpp"
+#include "atom_fixtures.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
@@ -16,13 +17,7 @@ namespace {
 
 const std::string kData = MOLSURF_DATA_DIR;
 
-Atom atom_at(const Vec3& c, double r) {
-  Atom a;
-  a.centre = c;
-  a.radius = r;
-  a.element = "C";
-  return a;
-}
+using testing::atom_at;
 
 using testing::valid_surface;
 ::testing::AssertionResult valid(const Mesh& m) { return valid_surface(m); }

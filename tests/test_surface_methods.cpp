@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "atom_fixtures.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
@@ -18,13 +19,7 @@ namespace {
 
 const std::string kData = MOLSURF_DATA_DIR;
 
-Atom atom_at(const Vec3& c, double r) {
-  Atom a;
-  a.centre = c;
-  a.radius = r;
-  a.element = "C";
-  return a;
-}
+using testing::atom_at;
 
 SphereOptions spheres(double probe, double density, int frequency = 0) {
   SphereOptions o;

@@ -384,9 +384,9 @@ void AtomTrimmer::add_crossings() {
       const ImplicitPoint x = ImplicitPoint::three_planes({planes[0][0], planes[0][1], planes[0][2], planes[1][0],
                                                            planes[1][1], planes[1][2], planes[2][0], planes[2][1],
                                                            planes[2][2]});
-      const std::uint32_t id = work_.add(x, {boolean_engine::Where::interior, 0}, sa.neighbour);
+      // On both neighbours' boundaries: added under each (the second call finds the first).
+      work_.add(x, {boolean_engine::Where::interior, 0}, sa.neighbour);
       work_.add(x, {boolean_engine::Where::interior, 0}, sb.neighbour);
-      (void)id;
       ++crossings_;
     }
   }
