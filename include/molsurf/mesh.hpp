@@ -4,6 +4,7 @@
 // Faces are counter-clockwise seen from outside, so (b-a)x(c-a) points outward and a
 // closed outward mesh has positive volume. Each face may carry a tag: the index of
 // the atom (or of the source face) it came from; -1 means untagged.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -36,9 +37,20 @@ struct BoundingBox {
   Vec3 min{1e300, 1e300, 1e300};
   Vec3 max{-1e300, -1e300, -1e300};
   bool empty() const { return min.x > max.x; }
-  void extend(const Vec3& p);
-  void extend(const BoundingBox& b);
-  bool overlaps(const BoundingBox& b) const;
+  void extend(const Vec3& p) {
+    min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+  }
+  void extend(const BoundingBox& b) {
+    if (b.empty()) return;
+    extend(b.min);
+    extend(b.max);
+  }
+  // Closed boxes: touching boxes overlap, so culling never drops a contact.
+  bool overlaps(const BoundingBox& b) const {
+    return min.x <= b.max.x && b.min.x <= max.x && min.y <= b.max.y && b.min.y <= max.y && min.z <= b.max.z &&
+           b.min.z <= max.z;
+  }
 };
 
 BoundingBox bounding_box(const Mesh& mesh);

@@ -105,7 +105,7 @@ int FacePoints::compare(int a, int b, int axis) const {
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
     std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, const FacePoints& points,
-    std::vector<std::vector<std::uint32_t>>& collinear_sets) {
+    std::vector<std::vector<std::uint32_t>>& collinear_sets, std::span<const std::vector<std::uint32_t>> known_inside) {
   const Projection& pr = points.projection();
   auto strictly_between = [&](int p, int x, int q) {  // on the common line of p, x, q
     for (int axis : {pr.u, pr.v}) {
@@ -117,9 +117,17 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
   };
   const int n = static_cast<int>(points.ids().size());
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces;
-  for (auto [s_id, t_id] : segments) {
+  std::vector<std::uint8_t> known(n, 0);
+  for (std::size_t segment = 0; segment < segments.size(); ++segment) {
+    const auto [s_id, t_id] = segments[segment];
     const int s = points.local(s_id), t = points.local(t_id);
     std::vector<int> inside;
+    if (!known_inside.empty())
+      for (std::uint32_t id : known_inside[segment]) {
+        const int c = points.local(id);
+        if (!known[c]) inside.push_back(c);
+        known[c] = 1;
+      }
     // A point strictly inside the segment lies in its box: intervals rule most out.
     auto outside_box = [&](int c) {
       for (int axis : {pr.u, pr.v}) {
@@ -130,10 +138,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
       return false;
     };
     for (int c = 0; c < n; ++c) {
-      if (c == s || c == t || outside_box(c)) continue;
+      if (c == s || c == t || known[c] || outside_box(c)) continue;
       if (points.orient(s, t, c) != 0) continue;
       if (strictly_between(s, c, t)) inside.push_back(c);
     }
+    for (int c : inside) known[c] = 0;
     std::vector<std::uint32_t>& line = collinear_sets.emplace_back();
     for (int c : inside) line.push_back(points.ids()[c]);
     line.push_back(s_id);
@@ -446,53 +455,6 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   for (int k = 0; k < m; ++k) local_boundary[k] = points.local(face.boundary[k]);
   std::vector<int> boundary_position(n, -1);
   for (int k = 0; k < m; ++k) boundary_position[local_boundary[k]] = k;
-  std::vector<std::array<int, 2>> link(n, {-1, -1});
-  std::vector<int> degree(n, 0);
-  for (auto [s, t] : face.constraints) {
-    const int a = points.local(s), b = points.local(t);
-    if (degree[a] == 2 || degree[b] == 2) return std::nullopt;
-    link[a][degree[a]++] = b;
-    link[b][degree[b]++] = a;
-  }
-  for (int v = 0; v < n; ++v) {
-    const bool on_boundary = boundary_position[v] >= 0;
-    if (on_boundary ? degree[v] > 1 : degree[v] != 2) return std::nullopt;
-  }
-
-  // Pieces: walk with the piece on the left. Along the boundary, a point with a polyline
-  // turns into it; at the polyline's far end the walk goes on along the boundary.
-  std::vector<std::uint8_t> boundary_used(m, 0);
-  std::vector<std::vector<int>> pieces;
-  std::size_t interior_visits = 0;
-  for (int start = 0; start < m; ++start) {
-    if (boundary_used[start]) continue;
-    std::vector<int> piece;
-    int k = start;  // walking boundary edge k -> k + 1
-    for (int guard = 0; guard <= 2 * n + 2; ++guard) {
-      boundary_used[k] = 1;
-      piece.push_back(local_boundary[k]);
-      int v = local_boundary[(k + 1) % m];
-      if (degree[v] == 1) {  // follow the polyline to its other end
-        int previous = v;
-        piece.push_back(v);
-        v = link[v][0];
-        while (boundary_position[v] < 0) {
-          piece.push_back(v);
-          ++interior_visits;
-          const int next = link[v][0] == previous ? link[v][1] : link[v][0];
-          previous = v;
-          v = next;
-        }
-      }
-      k = boundary_position[v];
-      if (k == start) break;
-      if (boundary_used[k]) return std::nullopt;
-    }
-    if (k != start) return std::nullopt;
-    pieces.push_back(std::move(piece));
-  }
-  // Every interior point lies on a polyline walked once in each direction (no loops).
-  if (interior_visits != 2 * static_cast<std::size_t>(n - m)) return std::nullopt;
 
   // Points known to be collinear (one edge of the face, one intersection segment): any
   // three of a set have orientation 0 without arithmetic (and the filter could never
@@ -511,6 +473,93 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
     if (known == 2) known = static_cast<std::int8_t>(points.orient(a, b, c));
     return sign * known;
   };
+
+  // The graph of the boundary and the constraints. Around every point its neighbours in
+  // counter-clockwise order; the pieces are its bounded faces, each walked with the piece
+  // on the left: from u -> v the walk goes on to the neighbour of v just clockwise of u.
+  std::vector<std::vector<int>> around(n);
+  for (int k = 0; k < m; ++k) {
+    const int a = local_boundary[k], b = local_boundary[(k + 1) % m];
+    around[a].push_back(b);
+    around[b].push_back(a);
+  }
+  for (auto [s, t] : face.constraints) {
+    const int a = points.local(s), b = points.local(t);
+    around[a].push_back(b);
+    around[b].push_back(a);
+  }
+  for (int v = 0; v < n; ++v)
+    if (around[v].size() < 2) return std::nullopt;  // a loose end: not a set of pieces
+  const int u_axis = face.projection.u, v_axis = face.projection.v;
+  for (int v = 0; v < n; ++v) {
+    if (around[v].size() < 3) continue;
+    if (const int k = boundary_position[v]; k >= 0 && around[v].size() == 3) {
+      // One constraint from the boundary: counter-clockwise from the next boundary point
+      // the interior comes first, then the previous boundary point.
+      around[v] = {local_boundary[(k + 1) % m], around[v][2], local_boundary[(k + m - 1) % m]};
+      continue;
+    }
+    // Directions from v by angle in [0, 2 pi): the upper half-plane first, then the
+    // order of orientation within a half (exact; two edges never share a direction).
+    auto lower_half = [&](int w) {
+      const int dv = points.compare(w, v, v_axis);
+      return dv < 0 || (dv == 0 && points.compare(w, v, u_axis) < 0);
+    };
+    std::sort(around[v].begin(), around[v].end(), [&](int a, int b) {
+      const bool ha = lower_half(a), hb = lower_half(b);
+      if (ha != hb) return hb;
+      return orient(v, a, b) > 0;
+    });
+  }
+  auto clockwise_of = [&](int v, int u) {
+    const auto& ring = around[v];
+    const int d = static_cast<int>(ring.size());
+    for (int k = 0; k < d; ++k)
+      if (ring[k] == u) return ring[(k + d - 1) % d];
+    return -1;
+  };
+  // Half-edges walked, keyed by (from, position of `to` in around[from]).
+  std::vector<std::vector<std::uint8_t>> walked(n);
+  for (int v = 0; v < n; ++v) walked[v].assign(around[v].size(), 0);
+  auto mark = [&](int a, int b) {
+    for (std::size_t k = 0; k < around[a].size(); ++k)
+      if (around[a][k] == b) {
+        if (walked[a][k]) return false;
+        walked[a][k] = 1;
+        return true;
+      }
+    return false;
+  };
+  // The outside of the face is not a piece.
+  for (int k = 0; k < m; ++k) mark(local_boundary[(k + 1) % m], local_boundary[k]);
+  std::vector<std::vector<int>> pieces;
+  std::vector<std::uint8_t> in_piece(n, 0);
+  for (int a = 0; a < n; ++a)
+    for (std::size_t k = 0; k < around[a].size(); ++k) {
+      if (walked[a][k]) continue;
+      std::vector<int> piece{a};
+      walked[a][k] = 1;
+      int from = a, to = around[a][k];
+      while (to != a) {
+        if (in_piece[to]) return std::nullopt;  // a point met twice: not a simple polygon
+        in_piece[to] = 1;
+        piece.push_back(to);
+        const int next = clockwise_of(to, from);
+        if (!mark(to, next)) return std::nullopt;
+        from = to;
+        to = next;
+      }
+      if (clockwise_of(a, from) != around[a][k]) return std::nullopt;
+      for (int v : piece) in_piece[v] = 0;
+      pieces.push_back(std::move(piece));
+    }
+  // A connected graph: V - E + F = 2 with the outside as one face (a loop of constraints
+  // apart from the rest would bound a piece with a hole).
+  std::size_t edges = 0;
+  for (const auto& ring : around) edges += ring.size();
+  edges /= 2;
+  if (static_cast<std::size_t>(n) + pieces.size() + 1 != edges + 2) return std::nullopt;
+
   std::vector<std::array<double, 2>> at(n);
   for (int i = 0; i < n; ++i)
     at[i] = {points.point(i).coordinate(face.projection.u).mid(), points.point(i).coordinate(face.projection.v).mid()};

@@ -75,10 +75,13 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
 
 // Splits each segment at the face's points lying strictly inside it (exact
 // collinearity in `projection` and betweenness), returning the pieces; each segment's
-// points (ends included) are appended to `collinear_sets`.
+// points (ends included) are appended to `collinear_sets`. `known_inside` (empty, or one
+// list per segment) names points the caller built strictly inside a segment (where two
+// traces cross): they are taken without a test, whose exact zero is the filter's costly case.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> split_segments_at_points(
     std::span<const std::pair<std::uint32_t, std::uint32_t>> segments, const FacePoints& points,
-    std::vector<std::vector<std::uint32_t>>& collinear_sets);
+    std::vector<std::vector<std::uint32_t>>& collinear_sets,
+    std::span<const std::vector<std::uint32_t>> known_inside = {});
 
 }  // namespace molsurf::boolean_engine
 

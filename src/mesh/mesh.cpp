@@ -25,23 +25,6 @@ void Mesh::append(const Mesh& other) {
   }
 }
 
-void BoundingBox::extend(const Vec3& p) {
-  min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
-  max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
-}
-
-void BoundingBox::extend(const BoundingBox& b) {
-  if (b.empty()) return;
-  extend(b.min);
-  extend(b.max);
-}
-
-bool BoundingBox::overlaps(const BoundingBox& b) const {
-  // Closed boxes: touching boxes overlap, so culling never drops a contact.
-  return min.x <= b.max.x && b.min.x <= max.x && min.y <= b.max.y && b.min.y <= max.y &&
-         min.z <= b.max.z && b.min.z <= max.z;
-}
-
 BoundingBox bounding_box(const Mesh& mesh) {
   BoundingBox box;
   for (const Triangle& t : mesh.faces)

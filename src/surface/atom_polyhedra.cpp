@@ -33,9 +33,49 @@ PolyhedronTemplate make_template(int frequency) {
     const Vec3 &p = t.unit.vertices[c[0]], &q = t.unit.vertices[c[1]], &r = t.unit.vertices[c[2]];
     const Vec3 n = cross(q - p, r - p);
     inradius = std::min(inradius, dot(n, p) / std::sqrt(dot(n, n)));
+    const Vec3 m = (p + q + r) * (1.0 / 3);
+    t.face_centre.push_back(m);
+    t.face_radius.push_back(std::sqrt(std::max({dot(p - m, p - m), dot(q - m, q - m), dot(r - m, r - m)})) * (1 + 1e-9));
     for (const Vec3& e : {q - p, r - q, p - r}) t.max_edge = std::max(t.max_edge, std::sqrt(dot(e, e)) * (1 + 1e-9));
   }
   t.inradius = inradius;
+
+  std::vector<std::uint32_t> count(t.unit.vertices.size() + 1, 0);
+  for (const Triangle& c : t.unit.faces)
+    for (Index v : c) ++count[v + 1];
+  std::partial_sum(count.begin(), count.end(), count.begin());
+  t.vertex_faces_first = count;
+  t.vertex_faces.resize(count.back());
+  for (std::uint32_t f = 0; f < t.unit.faces.size(); ++f)
+    for (Index v : t.unit.faces[f]) t.vertex_faces[count[v]++] = f;
+
+  // The subdivision lays out each icosahedron face's n^2 faces as a block, row i (from the
+  // face's first corner towards its second) holding up and down triangles alternately;
+  // the block's corners are its first face's corner 0, its last up triangle of column 0's
+  // corner 1, and its row 0's last face's corner 2.
+  const int n = frequency;
+  t.row_start.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) t.row_start[i + 1] = t.row_start[i] + 2 * (n - i) - 1;
+  for (int b = 0; b < 20; ++b) {
+    const std::size_t block = static_cast<std::size_t>(b) * n * n;
+    const Vec3 a = t.unit.vertices[t.unit.faces[block][0]];
+    const Vec3 bb = t.unit.vertices[t.unit.faces[block + t.row_start[n - 1]][1]];
+    const Vec3 c = t.unit.vertices[t.unit.faces[block + 2 * (n - 1)][2]];
+    t.base_normal[b] = normalized(a + bb + c);
+    // Inverse of [a bb c] (columns): rows are the cross products over the determinant.
+    const double det = dot(a, cross(bb, c));
+    t.base_inverse[b] = {cross(bb, c) * (1 / det), cross(c, a) * (1 / det), cross(a, bb) * (1 / det)};
+    Vec3 centre{0, 0, 0};
+    for (std::size_t f = block; f < block + n * n; ++f) centre = centre + t.face_centre[f];
+    centre = centre * (1.0 / (n * n));
+    double radius = 0;
+    for (std::size_t f = block; f < block + n * n; ++f) {
+      const Vec3 d = t.face_centre[f] - centre;
+      radius = std::max(radius, std::sqrt(dot(d, d)) + t.face_radius[f]);
+    }
+    t.block_centre[b] = centre;
+    t.block_radius[b] = radius * (1 + 1e-9);
+  }
   return t;
 }
 
@@ -85,6 +125,28 @@ AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& o
   });
   for (std::size_t k = 1; k < n; ++k)
     if (key(order[k]) == key(order[k - 1])) duplicate_[order[k]] = 1;
+}
+
+std::uint32_t PolyhedronTemplate::face_towards(const Vec3& direction) const {
+  int base = 0;
+  double best = dot(direction, base_normal[0]);
+  for (int b = 1; b < 20; ++b) {
+    const double score = dot(direction, base_normal[b]);
+    if (score > best) {
+      best = score;
+      base = b;
+    }
+  }
+  const auto& m = base_inverse[base];
+  const double alpha = dot(m[0], direction), beta = dot(m[1], direction), gamma = dot(m[2], direction);
+  const double sum = alpha + beta + gamma;
+  const int n = frequency;
+  const double fi = std::clamp(beta / sum * n, 0.0, static_cast<double>(n)),
+               fj = std::clamp(gamma / sum * n, 0.0, static_cast<double>(n));
+  const int i = std::min(static_cast<int>(fi), n - 1);
+  const int j = std::clamp(static_cast<int>(fj), 0, n - 1 - i);
+  const bool down = i + j < n - 1 && (fi - i) + (fj - j) > 1;
+  return static_cast<std::uint32_t>(base * n * n + row_start[i] + 2 * j + (down ? 1 : 0));
 }
 
 void AtomPolyhedra::vertices(std::size_t atom, std::vector<Vec3>& out) const {

@@ -22,6 +22,27 @@ struct PolyhedronTemplate {
   double area = 0;                                 // of the unit polyhedron
   double inradius = 0;  // a lower bound on every face plane's distance from the centre
   double max_edge = 0;  // an upper bound on every edge's length
+  // Per face, a ball holding it (centre and radius, unit scale): a cheap test of whether
+  // a face can reach a region.
+  std::vector<Vec3> face_centre;
+  std::vector<double> face_radius;
+  // The same per block of faces from one icosahedron face (faces b n^2 .. (b+1) n^2 - 1).
+  std::array<Vec3, 20> block_centre;
+  std::array<double, 20> block_radius;
+  // Faces around each vertex (compressed rows).
+  std::vector<std::uint32_t> vertex_faces_first, vertex_faces;
+
+  // The face whose cone from the centre holds `direction`, found without a search (the
+  // geodesic faces' cones are the flat subdivision's cones of the icosahedron's faces). A
+  // guess: rounding of the template can put a direction near a cone's boundary into the
+  // neighbouring cone, so callers confirm it exactly.
+  std::uint32_t face_towards(const Vec3& direction) const;
+
+  // The icosahedron's faces: their unit normals, and the inverse of the matrix whose
+  // columns are their corners (barycentric coordinates of a direction).
+  std::array<Vec3, 20> base_normal;
+  std::array<std::array<Vec3, 3>, 20> base_inverse;  // rows
+  std::vector<std::uint32_t> row_start;  // first face of each row within a base face's block
 };
 
 class AtomPolyhedra {
@@ -35,7 +56,10 @@ class AtomPolyhedra {
   // centre (both with a relative margin far above the rounding of the vertices).
   double circumradius(std::size_t atom) const { return circumradius_[atom]; }
   double inradius(std::size_t atom) const { return inradius_[atom]; }
+  double scale(std::size_t atom) const { return scale_[atom]; }
   Vec3 vertex(std::size_t atom, Index v) const { return centre_[atom] + shape(atom).unit.vertices[v] * scale_[atom]; }
+  // An upper bound on the rounding error of any of the atom's vertices.
+  double vertex_error(std::size_t atom) const { return circumradius_[atom] - scale_[atom]; }
   void vertices(std::size_t atom, std::vector<Vec3>& out) const;
   // Atoms identical to a lower-indexed one (same centre, radius and frequency): their
   // polyhedra coincide, and by the rule that ties go to the lower index they add nothing.

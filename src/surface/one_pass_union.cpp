@@ -41,21 +41,22 @@ BoundingBox box_of(const Vec3& a, const Vec3& b, const Vec3& c) {
   return box;
 }
 
-// A neighbour's polyhedron as the trimmed atom sees it: its vertices, and the faces that
-// can reach the trimmed atom (their boxes meet its box): the lens.
+// A neighbour's polyhedron as the trimmed atom sees it: its faces that can reach the
+// trimmed atom's boundary (the lens), with their boxes. Vertices are computed when needed,
+// by the same expression as everywhere (the same doubles).
 struct Neighbour {
   std::uint32_t atom = 0;
   Vec3 centre;
-  double inradius = 0, circumradius = 0;
+  double scale = 0, inradius = 0, circumradius = 0;
   const PolyhedronTemplate* shape = nullptr;
-  std::vector<Vec3> vertices;
   std::vector<std::uint32_t> lens;
   std::vector<BoundingBox> lens_boxes;
   BoundingBox box;
 
+  Vec3 vertex(Index v) const { return centre + shape->unit.vertices[v] * scale; }
   std::array<Vec3, 3> face(std::uint32_t g) const {
     const Triangle& t = shape->unit.faces[g];
-    return {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+    return {vertex(t[0]), vertex(t[1]), vertex(t[2])};
   }
 };
 
@@ -66,6 +67,26 @@ template <class Point>
 bool in_cone(const Vec3& o, const std::array<Vec3, 3>& t, const Point& x) {
   for (int k = 0; k < 3; ++k)
     if (geometry::orient3d(o, t[k], t[(k + 1) % 3], x) < 0) return false;
+  return true;
+}
+
+// Exact, before any point is constructed: the line through p and q, whose ends lie strictly
+// on opposite sides of the triangle's plane, meets the closed triangle. The line passes
+// each edge (a, b) on the side given by orient3d(p, q, a, b); it meets the triangle iff no
+// two edges see it on opposite sides, and it meets edge k's line iff that sign is zero
+// (`on_edge`: 0 there, 1 elsewhere).
+bool line_meets_triangle(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t,
+                         std::array<int, 3>* on_edge = nullptr) {
+  bool positive = false, negative = false;
+  std::array<int, 3> side;
+  for (int k = 0; k < 3; ++k) {
+    side[k] = geometry::orient3d(p, q, t[k], t[(k + 1) % 3]);
+    positive |= side[k] > 0;
+    negative |= side[k] < 0;
+  }
+  if (positive && negative) return false;
+  if (on_edge)
+    for (int k = 0; k < 3; ++k) (*on_edge)[k] = side[k] != 0;
   return true;
 }
 
@@ -84,19 +105,16 @@ bool inside_closed(const ImplicitPoint& x, const Neighbour& n) {
     inside = geometry::orient3d(t[0], t[1], t[2], x) <= 0;
     return true;
   };
-  // Faces in order of how well their centroid direction matches x's (a guess that is
-  // usually right first time; the exact cone test decides).
-  std::vector<std::pair<double, std::uint32_t>> order;
-  order.reserve(n.lens.size());
-  for (std::uint32_t g : n.lens) {
-    const auto t = n.face(g);
-    order.emplace_back(-dot((t[0] + t[1] + t[2]) * (1.0 / 3) - n.centre, d), g);
-  }
-  std::sort(order.begin(), order.end());
+  // The face towards x is found directly; rounding can only move that guess to a face
+  // around it, and the full search is a last resort that the exact test keeps correct.
   bool inside = false;
-  for (const auto& [score, g] : order)
-    if (try_face(g, inside)) return inside;
-  for (std::uint32_t g = 0; g < n.shape->unit.faces.size(); ++g)
+  const PolyhedronTemplate& shape = *n.shape;
+  const std::uint32_t guess = shape.face_towards(d);
+  if (try_face(guess, inside)) return inside;
+  for (Index v : shape.unit.faces[guess])
+    for (std::uint32_t k = shape.vertex_faces_first[v]; k < shape.vertex_faces_first[v + 1]; ++k)
+      if (shape.vertex_faces[k] != guess && try_face(shape.vertex_faces[k], inside)) return inside;
+  for (std::uint32_t g = 0; g < shape.unit.faces.size(); ++g)
     if (try_face(g, inside)) return inside;
   throw std::logic_error("one-pass union: a point in no face's cone");
 }
@@ -140,6 +158,7 @@ struct Segment {
   std::uint32_t s = 0, t = 0;  // local point ids
   std::uint32_t neighbour = 0;  // index into the atom's neighbour list
   std::uint32_t plane = 0;      // the neighbour's face whose plane holds it
+  std::vector<std::uint32_t> crossings;  // points where other traces cross it
 };
 
 // Everything one face's trimming builds, reused from face to face (no allocation in the
@@ -221,6 +240,7 @@ class AtomTrimmer {
 
  private:
   void load_neighbours(std::uint32_t atom);
+  void find_deepest();
   // The trace of neighbour face g on face f: adds the points of f ∩ g and, when they span a
   // segment, the segment. Returns false if they do not meet.
   bool trace(std::uint32_t n, std::uint32_t g);
@@ -233,6 +253,8 @@ class AtomTrimmer {
   std::uint32_t atom_ = 0;
   Vec3 centre_;
   std::vector<Vec3> vertices_;
+  std::vector<std::uint32_t> deepest_;  // per vertex: the neighbour whose inscribed ball holds it most deeply, or ~0
+  std::vector<double> depth_;
   std::vector<Neighbour> nbr_;
   std::size_t nbr_count_ = 0;
   // The face being trimmed.
@@ -240,50 +262,66 @@ class AtomTrimmer {
   std::array<Index, 3> f_index_{};
   BoundingBox f_box_;
   FaceWork work_;
-  std::vector<std::uint8_t> near_vertex_;
   std::size_t crossings_ = 0;
-  std::uint32_t last_culler_ = ~0u;
 };
 
 void AtomTrimmer::load_neighbours(std::uint32_t atom) {
   const auto row = neighbours_.of(atom);
   if (nbr_.size() < row.size()) nbr_.resize(row.size());
   nbr_count_ = row.size();
-  BoundingBox mine;
-  const double r = polyhedra_.circumradius(atom);
-  mine.extend(centre_ - Vec3{r, r, r});
-  mine.extend(centre_ + Vec3{r, r, r});
+  const double outer = polyhedra_.circumradius(atom), inner = polyhedra_.inradius(atom);
   for (std::size_t k = 0; k < row.size(); ++k) {
     Neighbour& n = nbr_[k];
     n.atom = row[k];
     n.centre = polyhedra_.centre(n.atom);
+    n.scale = polyhedra_.scale(n.atom);
     n.inradius = polyhedra_.inradius(n.atom);
     n.circumradius = polyhedra_.circumradius(n.atom);
     n.shape = &polyhedra_.shape(n.atom);
-    polyhedra_.vertices(n.atom, n.vertices);
     n.box = BoundingBox{};
     n.box.extend(n.centre - Vec3{n.circumradius, n.circumradius, n.circumradius});
     n.box.extend(n.centre + Vec3{n.circumradius, n.circumradius, n.circumradius});
     n.lens.clear();
     n.lens_boxes.clear();
-    // A face can reach this atom only if its vertex nearest to this centre is within
-    // reach (faces are small): test vertices first, then the faces around them.
-    const double reach = r * (1 + 1e-9);
-    const auto& faces = n.shape->unit.faces;
-    near_vertex_.assign(n.vertices.size(), 0);
-    const double slack = n.circumradius * n.shape->max_edge;  // a face is within an edge of each vertex
-    const double limit = (reach + slack) * (reach + slack);
-    for (std::size_t v = 0; v < n.vertices.size(); ++v) {
-      const Vec3 d = n.vertices[v] - centre_;
-      near_vertex_[v] = dot(d, d) <= limit;
-    }
-    for (std::uint32_t g = 0; g < faces.size(); ++g) {
-      if (!near_vertex_[faces[g][0]] && !near_vertex_[faces[g][1]] && !near_vertex_[faces[g][2]]) continue;
-      const auto t = n.face(g);
-      const BoundingBox b = box_of(t[0], t[1], t[2]);
-      if (b.overlaps(mine)) {
+    // A face can meet this atom's faces only where it meets the shell between this atom's
+    // inscribed and circumscribed balls (every face of the atom lies in it): tested on a
+    // ball around the face, widened by the vertices' rounding.
+    const double error = polyhedra_.vertex_error(n.atom);
+    auto misses_shell = [&](const Vec3& unit_centre, double unit_radius) {
+      const Vec3 d = n.centre + unit_centre * n.scale - centre_;
+      const double r = unit_radius * n.scale + 2 * error, dist2 = dot(d, d);
+      return dist2 > (outer + r) * (outer + r) || (r < inner && dist2 < (inner - r) * (inner - r));
+    };
+    const PolyhedronTemplate& shape = *n.shape;
+    const auto block_faces = static_cast<std::uint32_t>(shape.frequency * shape.frequency);
+    for (std::uint32_t b = 0; b < 20; ++b) {
+      if (misses_shell(shape.block_centre[b], shape.block_radius[b])) continue;
+      for (std::uint32_t g = b * block_faces; g < (b + 1) * block_faces; ++g) {
+        if (misses_shell(shape.face_centre[g], shape.face_radius[g])) continue;
+        const auto t = n.face(g);
         n.lens.push_back(g);
-        n.lens_boxes.push_back(b);
+        n.lens_boxes.push_back(box_of(t[0], t[1], t[2]));
+      }
+    }
+  }
+}
+
+void AtomTrimmer::find_deepest() {
+  const std::size_t count = vertices_.size();
+  deepest_.assign(count, ~0u);
+  depth_.assign(count, 0.0);
+  for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
+    const Vec3 c = nbr_[ni].centre;
+    const double r = nbr_[ni].inradius, r2 = r * r;
+    for (std::size_t v = 0; v < count; ++v) {
+      const Vec3 d = vertices_[v] - c;
+      const double d2 = dot(d, d);
+      if (d2 < r2) {
+        const double depth = r - std::sqrt(d2);
+        if (depth > depth_[v]) {
+          depth_[v] = depth;
+          deepest_[v] = ni;
+        }
       }
     }
   }
@@ -321,8 +359,8 @@ bool AtomTrimmer::trace(std::uint32_t ni, std::uint32_t g) {
       // Canonical edge direction (lower vertex first): the same definition from both faces.
       const bool forward = f_index_[k] < f_index_[k1];
       const Vec3 &p = forward ? f_[k] : f_[k1], &q = forward ? f_[k1] : f_[k];
-      const ImplicitPoint x = ImplicitPoint::line_plane(p, q, t[0], t[1], t[2]);
-      if (in_cone(n.centre, t, x)) note(work_.add(x, {Where::edge, k}, ni));
+      if (!line_meets_triangle(p, q, t)) continue;
+      note(work_.add(ImplicitPoint::line_plane(p, q, t[0], t[1], t[2]), {Where::edge, k}, ni));
     }
   }
   for (int m = 0; m < 3; ++m) {
@@ -337,9 +375,8 @@ bool AtomTrimmer::trace(std::uint32_t ni, std::uint32_t g) {
       const Triangle& tri = n.shape->unit.faces[g];
       const bool forward = tri[m] < tri[m1];
       const Vec3 &p = forward ? t[m] : t[m1], &q = forward ? t[m1] : t[m];
-      const ImplicitPoint y = ImplicitPoint::line_plane(p, q, f_[0], f_[1], f_[2]);
-      for (int k = 0; k < 3; ++k) side[k] = geometry::orient3d(centre_, f_[k], f_[(k + 1) % 3], y);
-      if (side[0] >= 0 && side[1] >= 0 && side[2] >= 0) note(work_.add(y, place_from_sides(side), ni));
+      if (!line_meets_triangle(p, q, f_, &side)) continue;
+      note(work_.add(ImplicitPoint::line_plane(p, q, f_[0], f_[1], f_[2]), place_from_sides(side), ni));
     }
   }
   if (count == 0) return false;
@@ -364,10 +401,10 @@ void AtomTrimmer::add_crossings() {
   // are points of the other segment, found when the segments are split).
   const std::size_t count = work_.segments.size();
   for (std::size_t a = 0; a < count; ++a) {
-    const Segment sa = work_.segments[a];
+    const Segment& sa = work_.segments[a];
     const auto pa = nbr_[sa.neighbour].face(sa.plane);
     for (std::size_t b = a + 1; b < count; ++b) {
-      const Segment sb = work_.segments[b];
+      const Segment& sb = work_.segments[b];
       if (sb.neighbour == sa.neighbour) continue;
       const auto pb = nbr_[sb.neighbour].face(sb.plane);
       const int o1 = geometry::orient3d(pa[0], pa[1], pa[2], work_.points[sb.s]);
@@ -386,7 +423,9 @@ void AtomTrimmer::add_crossings() {
                                                            planes[2][2]});
       // On both neighbours' boundaries: added under each (the second call finds the first).
       work_.add(x, {boolean_engine::Where::interior, 0}, sa.neighbour);
-      work_.add(x, {boolean_engine::Where::interior, 0}, sb.neighbour);
+      const std::uint32_t id = work_.add(x, {boolean_engine::Where::interior, 0}, sb.neighbour);
+      work_.segments[a].crossings.push_back(id);
+      work_.segments[b].crossings.push_back(id);
       ++crossings_;
     }
   }
@@ -428,31 +467,65 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
   for (std::uint32_t p = 0; p < w.points.size(); ++p)
     if (w.places[p].where == Where::interior && (on_segment[p] || w.on_neighbour[p].size() >= 2))
       face.interior.push_back(p);
-  std::vector<std::uint32_t> ids = face.boundary;
-  ids.insert(ids.end(), face.interior.begin(), face.interior.end());
-  const boolean_engine::FacePoints points(ids, w.points, face.projection);
-  for (const auto& run : edge_run) face.collinear_sets.push_back(run);
+  // Segments without repeats (coplanar neighbour faces can trace the same one), each with
+  // the crossings built on it.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> segments;
-  for (const Segment& s : w.segments)
-    if (s.s != s.t) segments.emplace_back(std::min(s.s, s.t), std::max(s.s, s.t));
-  std::sort(segments.begin(), segments.end());
-  segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
-  const auto pieces = boolean_engine::split_segments_at_points(segments, points, face.collinear_sets);
-  for (auto [s, t] : pieces) {
-    bool on_boundary = false;
+  std::vector<std::vector<std::uint32_t>> crossings;
+  {
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t k = 0; k < w.segments.size(); ++k)
+      if (w.segments[k].s != w.segments[k].t) order.push_back(k);
+    auto ends = [&](std::uint32_t k) {
+      return std::pair(std::min(w.segments[k].s, w.segments[k].t), std::max(w.segments[k].s, w.segments[k].t));
+    };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return ends(a) < ends(b); });
+    for (std::uint32_t k : order) {
+      if (segments.empty() || segments.back() != ends(k)) {
+        segments.push_back(ends(k));
+        crossings.emplace_back();
+      }
+      auto& known = crossings.back();
+      for (std::uint32_t id : w.segments[k].crossings)
+        if (std::find(known.begin(), known.end(), id) == known.end()) known.push_back(id);
+    }
+  }
+  auto on_boundary = [&](std::uint32_t s, std::uint32_t t) {
     for (const auto& run : edge_run)
       if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
-        on_boundary = true;
-    if (!on_boundary) face.constraints.emplace_back(std::min(s, t), std::max(s, t));
-  }
-  std::sort(face.constraints.begin(), face.constraints.end());
-  face.constraints.erase(std::unique(face.constraints.begin(), face.constraints.end()), face.constraints.end());
+        return true;
+    return false;
+  };
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  if (face.constraints.empty() && face.interior.empty() && face.boundary.size() == 3) {
-    triangles.push_back({corner[0], corner[1], corner[2]});
-  } else {
-    auto clipped = boolean_engine::triangulate_polylines(face, points);
-    triangles = clipped ? std::move(*clipped) : boolean_engine::retriangulate_face(face, points);
+  if (face.interior.empty()) {
+    // Every trace runs from edge to edge: chords, which cannot cross (a crossing would be
+    // a three-plane point in the interior) and hold no point inside them, so the face is
+    // cut into convex pieces without a predicate.
+    for (auto [s, t] : segments)
+      if (!on_boundary(s, t)) face.constraints.emplace_back(s, t);
+    if (face.constraints.empty() && face.boundary.size() == 3) {
+      triangles.push_back({corner[0], corner[1], corner[2]});
+    } else if (auto clipped = boolean_engine::triangulate_chords(face.boundary, edge_run, face.constraints, w.points,
+                                                                 face.projection)) {
+      triangles = std::move(*clipped);
+    }
+    face.constraints.clear();
+  }
+  if (triangles.empty()) {
+    std::vector<std::uint32_t> ids = face.boundary;
+    ids.insert(ids.end(), face.interior.begin(), face.interior.end());
+    const boolean_engine::FacePoints points(ids, w.points, face.projection);
+    for (const auto& run : edge_run) face.collinear_sets.push_back(run);
+    const auto pieces = boolean_engine::split_segments_at_points(segments, points, face.collinear_sets, crossings);
+    for (auto [s, t] : pieces)
+      if (!on_boundary(s, t)) face.constraints.emplace_back(std::min(s, t), std::max(s, t));
+    std::sort(face.constraints.begin(), face.constraints.end());
+    face.constraints.erase(std::unique(face.constraints.begin(), face.constraints.end()), face.constraints.end());
+    if (face.constraints.empty() && face.interior.empty() && face.boundary.size() == 3) {
+      triangles.push_back({corner[0], corner[1], corner[2]});
+    } else {
+      auto clipped = boolean_engine::triangulate_polylines(face, points);
+      triangles = clipped ? std::move(*clipped) : boolean_engine::retriangulate_face(face, points);
+    }
   }
   // Classify: a piece lies wholly inside or wholly outside each neighbour (no trace
   // crosses it), and inside a convex polyhedron iff its three corners are.
@@ -488,7 +561,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   PointTable table;
   const PolyhedronTemplate& shape = polyhedra_.shape(atom);
   crossings_ = 0;
-  last_culler_ = ~0u;
+  find_deepest();
   for (std::uint32_t f = 0; f < shape.unit.faces.size(); ++f) {
     const Triangle& tri = shape.unit.faces[f];
     for (int k = 0; k < 3; ++k) {
@@ -499,9 +572,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
     work_.clear();
     // Cull (§2.2.1): a face whose corners are inside a neighbour's inscribed ball is
     // inside it (the ball is inside the convex polyhedron).
-    // The neighbour that dropped the last face is tried first: neighbouring faces (the
-    // template's order) are usually inside the same atom.
-    bool dropped = false;
+      bool dropped = false;
     auto deep_inside = [&](const Neighbour& n) {
       if (!f_box_.overlaps(n.box)) return false;
       for (const Vec3& c : f_) {
@@ -510,12 +581,15 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       }
       return true;
     };
-    if (last_culler_ < nbr_count_ && deep_inside(nbr_[last_culler_])) dropped = true;
+    // The neighbours that hold the corners most deeply usually hold the whole face.
+    for (int k = 0; k < 3 && !dropped; ++k) {
+      const std::uint32_t ni = deepest_[tri[k]];
+      if (ni != ~0u && deep_inside(nbr_[ni])) dropped = true;
+    }
     for (std::uint32_t ni = 0; ni < nbr_count_ && !dropped; ++ni) {
       if (!f_box_.overlaps(nbr_[ni].box)) continue;
       if (deep_inside(nbr_[ni])) {
         dropped = true;
-        last_culler_ = ni;
       } else {
         work_.near.push_back(ni);
       }
@@ -615,7 +689,16 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     result.stats.faces_cut += p.faces_cut;
     result.stats.crossings += p.crossings;
     global.resize(p.points.size());
-    for (std::size_t k = 0; k < p.points.size(); ++k) global[k] = table.add(p.points[k], points);
+    // An atom's own corners are points of no other atom, unless two atoms have a vertex in
+    // common, which the merge by exact value below finds: they skip the table.
+    for (std::size_t k = 0; k < p.points.size(); ++k) {
+      if (p.points[k].is_explicit()) {
+        global[k] = static_cast<std::uint32_t>(points.size());
+        points.push_back(p.points[k]);
+      } else {
+        global[k] = table.add(p.points[k], points);
+      }
+    }
     for (const Triangle& t : p.triangles) {
       mesh.faces.push_back({global[t[0]], global[t[1]], global[t[2]]});
       mesh.face_tags.push_back(static_cast<std::int32_t>(i));
