@@ -77,14 +77,22 @@ TEST(ImplicitPoint, MixedExplicitAndImplicitOrientation) {
 namespace molsurf::geometry {
 namespace {
 
-TEST(Interval, OutwardRoundingMatchesNextafter) {
+TEST(Interval, OutwardRoundingMovesOneOrTwoSteps) {
   const double inf = std::numeric_limits<double>::infinity();
-  for (double v : {0.0, -0.0, 1.0, -1.0, 1e-310, -1e-310, 3.5e300, -2.2e-16, 0.1, -0.1}) {
-    EXPECT_EQ(interval_detail::up(v), std::nextafter(v, inf)) << v;
-    EXPECT_EQ(interval_detail::down(v), std::nextafter(v, -inf)) << v;
+  const double max = std::numeric_limits<double>::max();
+  for (double v : {0.0, -0.0, 1.0, -1.0, 1e-310, -1e-310, 3.5e300, -2.2e-16, 0.1, -0.1, 0x1p-1022, -0x1p-1022,
+                   max, -max, 1.9999999999999998, -1.9999999999999998}) {
+    const double up1 = std::nextafter(v, inf), down1 = std::nextafter(v, -inf);
+    EXPECT_GE(interval_detail::up(v), up1) << v;
+    EXPECT_LE(interval_detail::up(v), std::nextafter(up1, inf)) << v;
+    EXPECT_LE(interval_detail::down(v), down1) << v;
+    EXPECT_GE(interval_detail::down(v), std::nextafter(down1, -inf)) << v;
   }
   EXPECT_EQ(interval_detail::up(inf), inf);
   EXPECT_EQ(interval_detail::down(-inf), -inf);
+  EXPECT_EQ(interval_detail::up(-inf), -max);
+  EXPECT_EQ(interval_detail::down(inf), max);
+  EXPECT_TRUE(std::isnan(interval_detail::up(std::nan(""))));
 }
 
 }  // namespace

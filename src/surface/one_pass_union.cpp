@@ -171,6 +171,14 @@ struct FaceWork {
   std::vector<std::uint32_t> near;   // neighbours whose boxes meet the face's
   std::vector<std::uint32_t> relevant;
   std::vector<Plane> plane_kind;     // per neighbour (valid for relevant ones)
+  // Buffers of split and classify.
+  std::array<std::vector<std::uint32_t>, 3> edge_run;
+  std::vector<std::uint32_t> scratch;
+  std::vector<std::uint8_t> on_segment;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> unique_segments;
+  std::vector<std::vector<std::uint32_t>> unique_crossings;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::int8_t> inside;
 
   void clear() {
     points.clear();
@@ -255,6 +263,7 @@ class AtomTrimmer {
   std::vector<Vec3> vertices_;
   std::vector<std::uint32_t> deepest_;  // per vertex: the neighbour whose inscribed ball holds it most deeply, or ~0
   std::vector<double> depth_;
+  std::vector<std::uint32_t> corner_id_;  // per vertex: its id among the atom's points, or ~0
   std::vector<Neighbour> nbr_;
   std::size_t nbr_count_ = 0;
   // The face being trimmed.
@@ -312,12 +321,13 @@ void AtomTrimmer::find_deepest() {
   depth_.assign(count, 0.0);
   for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
     const Vec3 c = nbr_[ni].centre;
-    const double r = nbr_[ni].inradius, r2 = r * r;
+    // (r^2 - d^2) / 2r: close to r - d, the depth, without a root (an ordering only).
+    const double r = nbr_[ni].inradius, r2 = r * r, scale = 0.5 / r;
     for (std::size_t v = 0; v < count; ++v) {
       const Vec3 d = vertices_[v] - c;
       const double d2 = dot(d, d);
       if (d2 < r2) {
-        const double depth = r - std::sqrt(d2);
+        const double depth = (r2 - d2) * scale;
         if (depth > depth_[v]) {
           depth_[v] = depth;
           deepest_[v] = ni;
@@ -434,8 +444,18 @@ void AtomTrimmer::add_crossings() {
 void AtomTrimmer::emit(const std::array<std::uint32_t, 3>& local, AtomPieces& out, PointTable& table) {
   Triangle tri;
   for (int k = 0; k < 3; ++k) {
-    const ImplicitPoint& x = work_.points[local[k]];
-    tri[k] = table.add(x, out.points);
+    const Place place = work_.places[local[k]];
+    if (place.where == boolean_engine::Where::corner) {
+      // The atom's own vertices by index, without hashing.
+      std::uint32_t& id = corner_id_[f_index_[place.index]];
+      if (id == ~0u) {
+        id = static_cast<std::uint32_t>(out.points.size());
+        out.points.push_back(ImplicitPoint::explicit_point(f_[place.index]));
+      }
+      tri[k] = id;
+    } else {
+      tri[k] = table.add(work_.points[local[k]], out.points);
+    }
   }
   out.triangles.push_back(tri);
 }
@@ -448,9 +468,11 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
   std::array<std::uint32_t, 3> corner;
   for (std::uint8_t k = 0; k < 3; ++k)
     corner[k] = w.add(ImplicitPoint::explicit_point(f_[k]), {Where::corner, k}, ~0u);
-  std::vector<std::uint32_t> edge_run[3];
+  auto& edge_run = w.edge_run;
   for (int k = 0; k < 3; ++k) {
-    std::vector<std::uint32_t> inside;
+    auto& inside = w.scratch;
+    inside.clear();
+    edge_run[k].clear();
     for (std::uint32_t p = 0; p < w.points.size(); ++p)
       if (w.places[p].where == Where::edge && w.places[p].index == k) inside.push_back(p);
     boolean_engine::sort_along_segment(inside, f_[k], f_[(k + 1) % 3], w.points);
@@ -462,17 +484,21 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
   }
   // Interior points on a trace (a point where a neighbour only touches the face's
   // interior splits nothing).
-  std::vector<std::uint8_t> on_segment(w.points.size(), 0);
+  auto& on_segment = w.on_segment;
+  on_segment.assign(w.points.size(), 0);
   for (const Segment& s : w.segments) on_segment[s.s] = on_segment[s.t] = 1;
   for (std::uint32_t p = 0; p < w.points.size(); ++p)
     if (w.places[p].where == Where::interior && (on_segment[p] || w.on_neighbour[p].size() >= 2))
       face.interior.push_back(p);
   // Segments without repeats (coplanar neighbour faces can trace the same one), each with
   // the crossings built on it.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> segments;
-  std::vector<std::vector<std::uint32_t>> crossings;
+  auto& segments = w.unique_segments;
+  auto& crossings = w.unique_crossings;
+  segments.clear();
+  for (auto& known : crossings) known.clear();
   {
-    std::vector<std::uint32_t> order;
+    auto& order = w.scratch;
+    order.clear();
     for (std::uint32_t k = 0; k < w.segments.size(); ++k)
       if (w.segments[k].s != w.segments[k].t) order.push_back(k);
     auto ends = [&](std::uint32_t k) {
@@ -482,9 +508,9 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
     for (std::uint32_t k : order) {
       if (segments.empty() || segments.back() != ends(k)) {
         segments.push_back(ends(k));
-        crossings.emplace_back();
+        if (crossings.size() < segments.size()) crossings.emplace_back();
       }
-      auto& known = crossings.back();
+      auto& known = crossings[segments.size() - 1];
       for (std::uint32_t id : w.segments[k].crossings)
         if (std::find(known.begin(), known.end(), id) == known.end()) known.push_back(id);
     }
@@ -495,7 +521,8 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
         return true;
     return false;
   };
-  std::vector<std::array<std::uint32_t, 3>> triangles;
+  auto& triangles = w.triangles;
+  triangles.clear();
   if (face.interior.empty()) {
     // Every trace runs from edge to edge: chords, which cannot cross (a crossing would be
     // a three-plane point in the interior) and hold no point inside them, so the face is
@@ -515,7 +542,8 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
     ids.insert(ids.end(), face.interior.begin(), face.interior.end());
     const boolean_engine::FacePoints points(ids, w.points, face.projection);
     for (const auto& run : edge_run) face.collinear_sets.push_back(run);
-    const auto pieces = boolean_engine::split_segments_at_points(segments, points, face.collinear_sets, crossings);
+    const auto pieces = boolean_engine::split_segments_at_points(
+        segments, points, face.collinear_sets, std::span(crossings).first(segments.size()));
     for (auto [s, t] : pieces)
       if (!on_boundary(s, t)) face.constraints.emplace_back(std::min(s, t), std::max(s, t));
     std::sort(face.constraints.begin(), face.constraints.end());
@@ -529,7 +557,8 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
   }
   // Classify: a piece lies wholly inside or wholly outside each neighbour (no trace
   // crosses it), and inside a convex polyhedron iff its three corners are.
-  std::vector<std::int8_t> inside(w.points.size() * w.relevant.size(), -1);
+  auto& inside = w.inside;
+  inside.assign(w.points.size() * w.relevant.size(), -1);
   auto corner_inside = [&](std::uint32_t p, std::size_t r) {
     std::int8_t& known = inside[p * w.relevant.size() + r];
     if (known < 0) {
@@ -562,6 +591,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   const PolyhedronTemplate& shape = polyhedra_.shape(atom);
   crossings_ = 0;
   find_deepest();
+  corner_id_.assign(vertices_.size(), ~0u);
   for (std::uint32_t f = 0; f < shape.unit.faces.size(); ++f) {
     const Triangle& tri = shape.unit.faces[f];
     for (int k = 0; k < 3; ++k) {
