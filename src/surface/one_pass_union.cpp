@@ -223,6 +223,7 @@ Place place_from_sides(const std::array<int, 3>& side) {
 // The output of one atom: its kept pieces, with points merged by exact value.
 struct AtomPieces {
   std::vector<ImplicitPoint> points;
+  std::vector<std::uint64_t> hashes;  // of the points' definitions (implicit points only)
   std::vector<Triangle> triangles;
   std::size_t faces_inside = 0, faces_whole = 0, faces_cut = 0, crossings = 0;
 };
@@ -400,7 +401,7 @@ bool AtomTrimmer::trace(std::uint32_t ni, std::uint32_t g) {
       s = ids.front();
       e = ids.back();
     }
-    work_.segments.push_back({s, e, ni, g});
+    work_.segments.push_back({s, e, ni, g, {}});
   }
   return true;
 }
@@ -662,6 +663,9 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
     split_and_classify(out, table);
   }
   out.crossings = crossings_;
+  out.hashes.resize(out.points.size(), 0);
+  for (std::size_t k = 0; k < out.points.size(); ++k)
+    if (!out.points[k].is_explicit()) out.hashes[k] = DefinitionHash{}(out.points[k]);
   return out;
 }
 
@@ -709,8 +713,21 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   // filter boxes overlap are compared exactly.
   start = Clock::now();
   Mesh& mesh = result.mesh;
-  std::vector<ImplicitPoint> points;
-  PointTable table;
+  // The atoms' points stay where they are; the join refers to them (hashed in parallel).
+  struct PointRef {
+    std::uint64_t hash;
+    const ImplicitPoint* point;
+  };
+  struct RefHash {
+    std::size_t operator()(const PointRef& r) const { return static_cast<std::size_t>(r.hash); }
+  };
+  struct RefEqual {
+    bool operator()(const PointRef& a, const PointRef& b) const {
+      return a.hash == b.hash && same_definition(*a.point, *b.point);
+    }
+  };
+  std::vector<const ImplicitPoint*> points;
+  std::unordered_map<PointRef, std::uint32_t, RefHash, RefEqual> table;
   std::vector<std::uint32_t> global;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     AtomPieces& p = pieces[i];
@@ -724,29 +741,31 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     for (std::size_t k = 0; k < p.points.size(); ++k) {
       if (p.points[k].is_explicit()) {
         global[k] = static_cast<std::uint32_t>(points.size());
-        points.push_back(p.points[k]);
+        points.push_back(&p.points[k]);
       } else {
-        global[k] = table.add(p.points[k], points);
+        const auto [it, inserted] =
+            table.try_emplace(PointRef{p.hashes[k], &p.points[k]}, static_cast<std::uint32_t>(points.size()));
+        if (inserted) points.push_back(&p.points[k]);
+        global[k] = it->second;
       }
     }
     for (const Triangle& t : p.triangles) {
       mesh.faces.push_back({global[t[0]], global[t[1]], global[t[2]]});
       mesh.face_tags.push_back(static_cast<std::int32_t>(i));
     }
-    p = AtomPieces{};
+    p.triangles = {};
   }
-  std::vector<std::uint32_t> order(points.size()), same(points.size());
-  std::iota(order.begin(), order.end(), 0u);
+  table = {};
+  std::vector<std::pair<double, std::uint32_t>> order(points.size());
+  std::vector<std::uint32_t> same(points.size());
+  for (std::uint32_t p = 0; p < points.size(); ++p) order[p] = {points[p]->coordinate(0).lo, p};
   std::iota(same.begin(), same.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const double la = points[a].coordinate(0).lo, lb = points[b].coordinate(0).lo;
-    return la != lb ? la < lb : a < b;
-  });
+  std::sort(order.begin(), order.end());
   for (std::size_t k = 0; k < order.size(); ++k) {
-    const ImplicitPoint& a = points[order[k]];
-    for (std::size_t l = k + 1; l < order.size() && points[order[l]].coordinate(0).lo <= a.coordinate(0).hi; ++l) {
-      const std::uint32_t x = std::min(order[k], order[l]), y = std::max(order[k], order[l]);
-      if (same[y] != y || !geometry::same_point(a, points[order[l]])) continue;
+    const ImplicitPoint& a = *points[order[k].second];
+    for (std::size_t l = k + 1; l < order.size() && order[l].first <= a.coordinate(0).hi; ++l) {
+      const std::uint32_t x = std::min(order[k].second, order[l].second), y = std::max(order[k].second, order[l].second);
+      if (same[y] != y || !geometry::same_point(a, *points[order[l].second])) continue;
       std::uint32_t root = x;
       while (same[root] != root) root = same[root];
       same[y] = root;
@@ -758,7 +777,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     while (same[root] != root) root = same[root];
     if (root == p) {
       vertex_of[p] = static_cast<std::uint32_t>(mesh.vertices.size());
-      mesh.vertices.push_back(output_coordinates(points[p]));
+      mesh.vertices.push_back(output_coordinates(*points[p]));
     } else {
       vertex_of[p] = vertex_of[root];
     }
