@@ -10,6 +10,7 @@
 
 #include "atom_fixtures.hpp"
 #include "molsurf/atoms.hpp"
+#include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
 #include "surface_methods.hpp"
@@ -135,6 +136,26 @@ TEST(SurfaceMethods, NestedAtomsLeaveOnlyTheOuter) {
   const SurfaceResult r = solvent_accessible_surface(atoms, o);
   for (std::int32_t tag : r.mesh.face_tags) EXPECT_EQ(tag, 0);
   EXPECT_TRUE(testing::methods_agree(atoms, o.spheres));
+}
+
+// Huge spheres whose centres are close compared with their radii (1crn with --probe 1e9
+// at frequency 1 ran for hours): every face is crossed by hundreds of neighbour faces.
+// The one-pass union refuses them with one clear error, quickly, instead of a hang.
+TEST(SurfaceMethods, NearlyCoincidentHugeSpheresAreRefusedPlainly) {
+  std::vector<Atom> atoms;
+  for (int k = 0; k < 160; ++k)
+    atoms.push_back(atom_at({std::fmod(0.37 * k, 3.0), std::fmod(0.61 * k, 2.0), std::fmod(0.13 * k, 1.5)}, 1.7));
+  SurfaceOptions o;
+  o.spheres = spheres(1e9, 2, 1);
+  try {
+    solvent_accessible_surface(atoms, o);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("too complex"), std::string::npos) << e.what();
+  }
+  // The same placement with molecular radii is an ordinary surface.
+  o.spheres = spheres(1.4, 2);
+  EXPECT_TRUE(check_mesh(solvent_accessible_surface(atoms, o).mesh, {}).valid());
 }
 
 }  // namespace

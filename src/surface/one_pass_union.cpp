@@ -11,10 +11,12 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "boolean/intersect.hpp"
+#include "molsurf/error.hpp"
 #include "boolean/retriangulate.hpp"
 #include "boolean/split.hpp"
 #include "common/parallel_exceptions.hpp"
@@ -28,6 +30,11 @@ namespace {
 
 using geometry::ImplicitPoint;
 using Clock = std::chrono::steady_clock;
+
+// Molecular inputs cross a face with a few traces (each neighbour that reaches it adds one
+// or two). Hundreds mean spheres that nearly coincide, whose union's boundary has a number
+// of pieces quadratic in them on every face: refused plainly instead of running for hours.
+constexpr std::size_t kMaxTracesPerFace = 256;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -650,6 +657,11 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       ++out.faces_inside;
       continue;
     }
+    if (work_.segments.size() > kMaxTracesPerFace)
+      throw Error("the union is too complex to build: a face of atom " + std::to_string(atom + 1) +
+                  " (counting from 1) is crossed by " + std::to_string(work_.segments.size()) +
+                  " faces of its neighbours, more than " + std::to_string(kMaxTracesPerFace) +
+                  "; its sphere nearly coincides with many others (a --probe far larger than the atoms' spacing?)");
     if (work_.relevant.empty()) {
       ++out.faces_whole;
       std::array<std::uint32_t, 3> local;
