@@ -599,8 +599,9 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   // Each piece is a cyclic list; an ear's verdict and score depend only on its corner's
   // two neighbours on each side, and clipping a vertex can only turn other corners into
   // ears (one point fewer to contain), so a valid ear keeps its score until a neighbour
-  // within two steps is clipped. Corners that are no ears are re-examined every round.
-  enum : std::uint8_t { kStale, kEar, kNoEar };
+  // within two steps is clipped. So is a reflex corner (its two neighbours decide it);
+  // corners whose triangle holds a point are re-examined every round.
+  enum : std::uint8_t { kStale, kEar, kNoEar, kReflex };
   for (const std::vector<int>& poly : pieces) {
     const int k = static_cast<int>(poly.size());
     std::vector<int> prev(k), next(k);
@@ -613,7 +614,7 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
     int head = 0, remaining = k;
     auto examine = [&](int i) {
       const int p = poly[prev[i]], c = poly[i], q = poly[next[i]];
-      if (orient(p, c, q) <= 0) return kNoEar;
+      if (orient(p, c, q) <= 0) return kReflex;
       for (int j = next[next[i]], step = 3; step < remaining; ++step, j = next[j]) {
         const int w = poly[j];
         if (w != p && w != c && w != q && !outside_box(w, p, c, q) && orient(p, c, w) >= 0 && orient(c, q, w) >= 0 &&
@@ -635,7 +636,7 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
       int best = -1;
       double best_cosine = 2;
       for (int step = 0, i = head; step < remaining; ++step, i = next[i]) {
-        if (state[i] != kEar) state[i] = examine(i);
+        if (state[i] != kEar && state[i] != kReflex) state[i] = examine(i);
         if (state[i] == kEar && score[i] < best_cosine) {
           best_cosine = score[i];
           best = i;

@@ -1,6 +1,7 @@
 #include "surface/one_pass_union.hpp"
 
 #include <omp.h>
+#include <parallel/algorithm>
 
 #include <algorithm>
 #include <array>
@@ -772,7 +773,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   std::vector<std::uint32_t> same(points.size());
   for (std::uint32_t p = 0; p < points.size(); ++p) order[p] = {points[p]->coordinate(0).lo, p};
   std::iota(same.begin(), same.end(), 0u);
-  std::sort(order.begin(), order.end());
+  __gnu_parallel::sort(order.begin(), order.end());  // a total order: the same for any thread count
   for (std::size_t k = 0; k < order.size(); ++k) {
     const ImplicitPoint& a = *points[order[k].second];
     for (std::size_t l = k + 1; l < order.size() && order[l].first <= a.coordinate(0).hi; ++l) {
@@ -802,7 +803,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   directed.reserve(mesh.faces.size() * 3);
   for (const Triangle& t : mesh.faces)
     for (int k = 0; k < 3; ++k) directed.push_back(std::uint64_t(t[k]) << 32 | t[(k + 1) % 3]);
-  std::sort(directed.begin(), directed.end());
+  __gnu_parallel::sort(directed.begin(), directed.end());
   for (std::uint64_t e : directed) {
     const std::uint64_t reverse = (e << 32) | (e >> 32);
     if (!std::binary_search(directed.begin(), directed.end(), reverse)) ++result.stats.open_edges;
