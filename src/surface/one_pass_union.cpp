@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "boolean/intersect.hpp"
+#include "boolean/repair_rounding.hpp"
 #include "molsurf/error.hpp"
 #include "boolean/retriangulate.hpp"
 #include "boolean/split.hpp"
@@ -798,6 +799,17 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   for (Triangle& t : mesh.faces)
     for (Index& v : t) v = vertex_of[v];
   result.stats.merged_points = points.size() - mesh.vertices.size();
+  // Rounding the points to doubles, after every decision, can make a tiny piece
+  // degenerate or fold it over its neighbour; the engine's repair fixes that by exact
+  // predicates on the rounded coordinates, without moving a vertex.
+  {
+    std::vector<std::uint8_t> rounded(mesh.vertices.size(), 0), operand(mesh.faces.size(), 0);
+    for (std::uint32_t p = 0; p < points.size(); ++p)
+      if (!points[p]->is_explicit()) rounded[vertex_of[p]] = 1;
+    std::vector<std::uint32_t> atom_of(mesh.face_tags.begin(), mesh.face_tags.end());
+    boolean_engine::repair_rounding(mesh, operand, atom_of, rounded, {});
+    mesh.face_tags.assign(atom_of.begin(), atom_of.end());
+  }
   // Closed: every directed edge has its reverse.
   std::vector<std::uint64_t> directed;
   directed.reserve(mesh.faces.size() * 3);
