@@ -104,15 +104,17 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_chords(
 
 namespace molsurf::boolean_engine {
 
-// The next most common case: the constraints are disjoint polylines running from one
-// boundary point to another through the interior points (every interior point on exactly
-// two constraints, every boundary point on at most one). They cut the face into simple
-// polygons, traced without arithmetic; each is ear-clipped with exact orientations (an
-// ear: a strictly convex corner whose closed triangle holds no other corner of the
-// polygon), the ear with the largest smallest angle first (approximate: quality only).
-// nullopt when the constraints have another shape, or no ear is found, or the best ear
-// has an angle under 1 degree (the caller then uses the advancing front, whose Delaunay
-// choice handles nearly collinear points better).
+// The next most common case: the constraints and the face's boundary form one connected
+// planar graph (disjoint polylines from boundary to boundary, or traces that cross at
+// interior points). Its pieces are found by walking the graph with each piece on the left,
+// the edges around every point of degree three or more in exact angular order; each piece
+// must be a simple polygon. Each is ear-clipped with exact orientations (an ear: a
+// strictly convex corner whose closed triangle holds no other corner of the polygon), the
+// ear with the largest smallest angle first (approximate: quality only).
+// nullopt when the constraints have another shape (a loose end, a loop apart from the
+// rest, a piece that meets a point twice), or no ear is found, or the best ear has an
+// angle under 0.1 degree (the caller then uses the advancing front, whose Delaunay choice
+// handles nearly collinear points better).
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
                                                                                 const FacePoints& points);
 
