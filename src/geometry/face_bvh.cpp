@@ -57,80 +57,121 @@ BoxBvh::BoxBvh(std::span<const BoundingBox> boxes) {
 
 BoxBvh BoxBvh::for_faces(const Mesh& mesh, std::span<const std::uint8_t> include) {
   std::vector<BoundingBox> boxes(mesh.faces.size());
+  const auto nf = static_cast<std::int64_t>(mesh.faces.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t f = 0; f < nf; ++f) boxes[f] = face_box(mesh, static_cast<std::size_t>(f));
   std::vector<std::uint32_t> ids;
   ids.reserve(mesh.faces.size());
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    boxes[f] = face_box(mesh, f);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
     if (include.empty() || include[f]) ids.push_back(static_cast<std::uint32_t>(f));
-  }
   BoxBvh bvh;
   bvh.build(boxes, std::move(ids));
   return bvh;
 }
 
-void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t> ids) {
-  item_count_ = ids.size();
-  if (ids.empty()) return;
+namespace {
 
-  std::vector<BoundingBox> node_boxes;
-  node_boxes.reserve(2 * ids.size() / kLeafSize + 2);
-  first_.reserve(node_boxes.capacity());
-  count_.reserve(node_boxes.capacity());
+// The number of nodes over `items` items: it depends on the count alone, because every
+// split is at the middle position. It lets every subtree know its node indices before it
+// is built, so subtrees are built in parallel into one array, in the same layout as a
+// serial build.
+std::uint32_t subtree_nodes(std::uint32_t items) {
+  if (items <= BoxBvh::kLeafSize) return 1;
+  return 1 + subtree_nodes(items / 2) + subtree_nodes(items - items / 2);
+}
 
-  // Box centres once, not in every comparison of every level.
-  std::vector<Vec3> centres_of(boxes.size());
-  for (const std::uint32_t id : ids) {
-    const BoundingBox& b = boxes[id];
-    centres_of[id] = {centre(b, 0), centre(b, 1), centre(b, 2)};
-  }
+// An item being sorted into leaf order: its centre travels with it, so the median
+// selections stream through contiguous memory.
+struct SortItem {
+  double centre[3];
+  std::uint32_t id;
+};
 
-  struct Range {
-    std::uint32_t node, begin, end;
-  };
-  std::vector<Range> work{{0, 0, static_cast<std::uint32_t>(ids.size())}};
-  node_boxes.emplace_back();
-  first_.push_back(0);
-  count_.push_back(0);
+}  // namespace
 
-  while (!work.empty()) {
-    const Range r = work.back();
-    work.pop_back();
-    BoundingBox box, centres;
-    for (std::uint32_t k = r.begin; k < r.end; ++k) {
-      const BoundingBox& b = boxes[ids[k]];
-      box = union_of(box, b);
-      const Vec3& c = centres_of[ids[k]];
-      centres = union_of(centres, BoundingBox{c, c});
+// Node `node` covers items [begin, end); its children are the pair at `next`, and their
+// descendants follow: the left child's first, then the right child's. A node's box is the
+// union of its children's, computed after them.
+struct BoxBvh::Builder {
+  std::span<const BoundingBox> boxes;
+  std::vector<SortItem>& items;
+  std::vector<BoundingBox>& node_boxes;
+  std::vector<std::uint32_t>& first;
+  std::vector<std::uint32_t>& count;
+
+  // Ranges smaller than this are built by the task that reached them.
+  static constexpr std::uint32_t kTaskItems = 8192;
+
+  void build(std::uint32_t node, std::uint32_t next, std::uint32_t begin, std::uint32_t end) {
+    if (end - begin <= kLeafSize) {
+      first[node] = begin;
+      count[node] = end - begin;
+      BoundingBox box;
+      for (std::uint32_t k = begin; k < end; ++k) box = union_of(box, boxes[items[k].id]);
+      node_boxes[node] = box;
+      return;
     }
-    node_boxes[r.node] = box;
-    if (r.end - r.begin <= kLeafSize) {
-      first_[r.node] = r.begin;
-      count_[r.node] = r.end - r.begin;
-      continue;
+    BoundingBox centres;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const Vec3 c{items[k].centre[0], items[k].centre[1], items[k].centre[2]};
+      centres = union_of(centres, BoundingBox{c, c});
     }
     const Vec3 extent = centres.max - centres.min;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    const std::uint32_t mid = r.begin + (r.end - r.begin) / 2;
-    std::nth_element(ids.begin() + r.begin, ids.begin() + mid, ids.begin() + r.end,
-                     [&](std::uint32_t i, std::uint32_t j) { return centres_of[i][axis] < centres_of[j][axis]; });
-    const auto left = static_cast<std::uint32_t>(node_boxes.size());
-    for (int child = 0; child < 2; ++child) {
-      node_boxes.emplace_back();
-      first_.push_back(0);
-      count_.push_back(0);
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                     [axis](const SortItem& a, const SortItem& b) { return a.centre[axis] < b.centre[axis]; });
+    first[node] = next;
+    count[node] = 0;
+    const std::uint32_t left_next = next + 2;
+    const std::uint32_t right_next = left_next + subtree_nodes(mid - begin) - 1;
+    if (end - begin >= kTaskItems) {
+#pragma omp task default(shared) firstprivate(next, left_next, begin, mid)
+      build(next, left_next, begin, mid);
+      build(next + 1, right_next, mid, end);
+#pragma omp taskwait
+    } else {
+      build(next, left_next, begin, mid);
+      build(next + 1, right_next, mid, end);
     }
-    first_[r.node] = left;
-    count_[r.node] = 0;
-    work.push_back({left, r.begin, mid});
-    work.push_back({left + 1, mid, r.end});
+    node_boxes[node] = union_of(node_boxes[next], node_boxes[next + 1]);
   }
+};
 
-  node_count_ = node_boxes.size();
+void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t> ids) {
+  item_count_ = ids.size();
+  if (ids.empty()) return;
+  const auto n = static_cast<std::int64_t>(ids.size());
+
+  std::vector<SortItem> items(ids.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const BoundingBox& b = boxes[ids[k]];
+    items[k] = {{centre(b, 0), centre(b, 1), centre(b, 2)}, ids[k]};
+  }
+  node_count_ = subtree_nodes(static_cast<std::uint32_t>(ids.size()));
+  std::vector<BoundingBox> node_boxes(node_count_);
+  first_.assign(node_count_, 0);
+  count_.assign(node_count_, 0);
+  Builder builder{boxes, items, node_boxes, first_, count_};
+#pragma omp parallel
+#pragma omp single
+  builder.build(0, 1, 0, static_cast<std::uint32_t>(ids.size()));
+
   node_bounds_.resize(node_count_);
-  for (std::size_t n = 0; n < node_count_; ++n) node_bounds_.set(n, node_boxes[n]);
-  items_ = std::move(ids);
-  item_bounds_.resize(items_.size());
-  for (std::size_t k = 0; k < items_.size(); ++k) item_bounds_.set(k, boxes[items_[k]]);
+  items_.resize(items.size());
+  item_bounds_.resize(items.size());
+  const auto nodes = static_cast<std::int64_t>(node_count_);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (std::int64_t k = 0; k < nodes; ++k) node_bounds_.set(static_cast<std::size_t>(k), node_boxes[k]);
+#pragma omp for schedule(static) nowait
+    for (std::int64_t k = 0; k < n; ++k) {
+      items_[k] = items[k].id;
+      item_bounds_.set(static_cast<std::size_t>(k), boxes[items[k].id]);
+    }
+  }
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> BoxBvh::overlapping_pairs() const {

@@ -11,7 +11,8 @@
 // Layout: nodes in flat arrays (structure of arrays). An inner node's children are
 // adjacent (left, left + 1); a leaf holds up to kLeafSize items, stored contiguously
 // with their boxes copied in leaf order so a leaf scan touches one cache-friendly run.
-// Built top-down by median split of the box centres along the widest axis.
+// Built top-down by median split of the box centres along the widest axis; subtrees in
+// parallel (OpenMP tasks), in the layout a serial build gives.
 // Queries are const and allocation-free, so they can run from an OpenMP parallel loop.
 #include <cstddef>
 #include <cstdint>
@@ -64,6 +65,7 @@ class BoxBvh {
     }
   };
 
+  struct Builder;
   void build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t> ids);
 
   std::size_t item_count_ = 0, node_count_ = 0;

@@ -60,6 +60,11 @@ struct Neighbour {
   const PolyhedronTemplate* shape = nullptr;
   std::vector<std::uint32_t> lens;
   std::vector<BoundingBox> lens_boxes;
+  // The lens grouped by block of the icosahedron: where each group ends in `lens`, and the
+  // box of the group's faces, so a face is tested against the few groups it can reach.
+  std::vector<std::uint32_t> group_end;
+  std::vector<BoundingBox> group_box;
+  bool lens_found = false;  // found on first use: most neighbours only bury faces whole
   BoundingBox box;
 
   Vec3 vertex(Index v) const { return centre + shape->unit.vertices[v] * scale; }
@@ -258,6 +263,7 @@ class AtomTrimmer {
 
  private:
   void load_neighbours(std::uint32_t atom);
+  void find_lens(Neighbour& n) const;
   void find_deepest();
   // The trace of neighbour face g on face f: adds the points of f ∩ g and, when they span a
   // segment, the segment. Returns false if they do not meet.
@@ -288,7 +294,6 @@ void AtomTrimmer::load_neighbours(std::uint32_t atom) {
   const auto row = neighbours_.of(atom);
   if (nbr_.size() < row.size()) nbr_.resize(row.size());
   nbr_count_ = row.size();
-  const double outer = polyhedra_.circumradius(atom), inner = polyhedra_.inradius(atom);
   for (std::size_t k = 0; k < row.size(); ++k) {
     Neighbour& n = nbr_[k];
     n.atom = row[k];
@@ -300,28 +305,42 @@ void AtomTrimmer::load_neighbours(std::uint32_t atom) {
     n.box = BoundingBox{};
     n.box.extend(n.centre - Vec3{n.circumradius, n.circumradius, n.circumradius});
     n.box.extend(n.centre + Vec3{n.circumradius, n.circumradius, n.circumradius});
-    n.lens.clear();
-    n.lens_boxes.clear();
-    // A face can meet this atom's faces only where it meets the shell between this atom's
-    // inscribed and circumscribed balls (every face of the atom lies in it): tested on a
-    // ball around the face, widened by the vertices' rounding.
-    const double error = polyhedra_.vertex_error(n.atom);
-    auto misses_shell = [&](const Vec3& unit_centre, double unit_radius) {
-      const Vec3 d = n.centre + unit_centre * n.scale - centre_;
-      const double r = unit_radius * n.scale + 2 * error, dist2 = dot(d, d);
-      return dist2 > (outer + r) * (outer + r) || (r < inner && dist2 < (inner - r) * (inner - r));
-    };
-    const PolyhedronTemplate& shape = *n.shape;
-    const auto block_faces = static_cast<std::uint32_t>(shape.frequency * shape.frequency);
-    for (std::uint32_t b = 0; b < 20; ++b) {
-      if (misses_shell(shape.block_centre[b], shape.block_radius[b])) continue;
-      for (std::uint32_t g = b * block_faces; g < (b + 1) * block_faces; ++g) {
-        if (misses_shell(shape.face_centre[g], shape.face_radius[g])) continue;
-        const auto t = n.face(g);
-        n.lens.push_back(g);
-        n.lens_boxes.push_back(box_of(t[0], t[1], t[2]));
-      }
+    n.lens_found = false;
+  }
+}
+
+void AtomTrimmer::find_lens(Neighbour& n) const {
+  n.lens.clear();
+  n.lens_boxes.clear();
+  n.group_end.clear();
+  n.group_box.clear();
+  n.lens_found = true;
+  const double outer = polyhedra_.circumradius(atom_), inner = polyhedra_.inradius(atom_);
+  // A face can meet this atom's faces only where it meets the shell between this atom's
+  // inscribed and circumscribed balls (every face of the atom lies in it): tested on a
+  // ball around the face, widened by the vertices' rounding.
+  const double error = polyhedra_.vertex_error(n.atom);
+  auto misses_shell = [&](const Vec3& unit_centre, double unit_radius) {
+    const Vec3 d = n.centre + unit_centre * n.scale - centre_;
+    const double r = unit_radius * n.scale + 2 * error, dist2 = dot(d, d);
+    return dist2 > (outer + r) * (outer + r) || (r < inner && dist2 < (inner - r) * (inner - r));
+  };
+  const PolyhedronTemplate& shape = *n.shape;
+  const auto block_faces = static_cast<std::uint32_t>(shape.frequency * shape.frequency);
+  for (std::uint32_t b = 0; b < 20; ++b) {
+    if (misses_shell(shape.block_centre[b], shape.block_radius[b])) continue;
+    BoundingBox group;
+    const std::size_t first = n.lens.size();
+    for (std::uint32_t g = b * block_faces; g < (b + 1) * block_faces; ++g) {
+      if (misses_shell(shape.face_centre[g], shape.face_radius[g])) continue;
+      const auto t = n.face(g);
+      n.lens.push_back(g);
+      n.lens_boxes.push_back(box_of(t[0], t[1], t[2]));
+      group.extend(n.lens_boxes.back());
     }
+    if (n.lens.size() == first) continue;
+    n.group_end.push_back(static_cast<std::uint32_t>(n.lens.size()));
+    n.group_box.push_back(group);
   }
 }
 
@@ -329,18 +348,27 @@ void AtomTrimmer::find_deepest() {
   const std::size_t count = vertices_.size();
   deepest_.assign(count, ~0u);
   depth_.assign(count, 0.0);
+  const PolyhedronTemplate& shape = polyhedra_.shape(atom_);
+  const double scale = polyhedra_.scale(atom_), error = polyhedra_.vertex_error(atom_);
   for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
     const Vec3 c = nbr_[ni].centre;
     // (r^2 - d^2) / 2r: close to r - d, the depth, without a root (an ordering only).
-    const double r = nbr_[ni].inradius, r2 = r * r, scale = 0.5 / r;
-    for (std::size_t v = 0; v < count; ++v) {
-      const Vec3 d = vertices_[v] - c;
-      const double d2 = dot(d, d);
-      if (d2 < r2) {
-        const double depth = (r2 - d2) * scale;
-        if (depth > depth_[v]) {
-          depth_[v] = depth;
-          deepest_[v] = ni;
+    const double r = nbr_[ni].inradius, r2 = r * r, half_over_r = 0.5 / r;
+    for (std::uint32_t b = 0; b < 20; ++b) {
+      // Blocks whose ball misses the neighbour's inscribed ball hold no vertex inside it.
+      const Vec3 to_block = centre_ + shape.block_centre[b] * scale - c;
+      const double reach = r + shape.block_radius[b] * scale + 2 * error;
+      if (dot(to_block, to_block) >= reach * reach) continue;
+      for (std::uint32_t k = shape.block_vertices_first[b]; k < shape.block_vertices_first[b + 1]; ++k) {
+        const std::uint32_t v = shape.block_vertices[k];
+        const Vec3 d = vertices_[v] - c;
+        const double d2 = dot(d, d);
+        if (d2 < r2) {
+          const double depth = (r2 - d2) * half_over_r;
+          if (depth > depth_[v]) {
+            depth_[v] = depth;
+            deepest_[v] = ni;
+          }
         }
       }
     }
@@ -642,9 +670,13 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
     for (std::uint32_t ni : work_.near) {
       Neighbour& n = nbr_[ni];
       work_.plane_kind[ni] = Plane::cuts;
+      if (!n.lens_found) find_lens(n);
       bool meets = false;
-      for (std::size_t l = 0; l < n.lens.size(); ++l)
-        if (n.lens_boxes[l].overlaps(f_box_) && trace(ni, n.lens[l])) meets = true;
+      for (std::size_t group = 0, l = 0; group < n.group_end.size(); l = n.group_end[group++]) {
+        if (!n.group_box[group].overlaps(f_box_)) continue;
+        for (; l < n.group_end[group]; ++l)
+          if (n.lens_boxes[l].overlaps(f_box_) && trace(ni, n.lens[l])) meets = true;
+      }
       if (meets) {
         work_.relevant.push_back(ni);
         continue;
