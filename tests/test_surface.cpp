@@ -7,8 +7,10 @@
 #include "boolean_invariants.hpp"
 #include "atom_fixtures.hpp"
 #include "molsurf/atoms.hpp"
+#include "molsurf/ball_union.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
 
@@ -86,6 +88,53 @@ TEST_P(Crambin, ValidSurfaceAtEachDensityAndProbe) {
 
 INSTANTIATE_TEST_SUITE_P(DensitiesAndProbes, Crambin,
                          ::testing::Combine(::testing::Values(1.0, 2.0, 4.0), ::testing::Values(0.0, 1.4)));
+
+TEST(Surface, SpheresBelowTheMinimumDensityRadiusGetItsFrequency) {
+  SphereOptions o;  // density 2, min_density_radius 2.5
+  o.probe = 0;
+  for (double r : {0.5, 1.2, 1.52, 1.88, 2.4})
+    EXPECT_EQ(sphere_frequency(atom_at({}, r), o), frequency_for_density(2.5, 2.0)) << r;
+  EXPECT_EQ(frequency_for_density(2.5, 2.0), 4);
+  EXPECT_EQ(sphere_frequency(atom_at({}, 1.88), o), 4);  // the density alone: 3
+  EXPECT_EQ(sphere_frequency(atom_at({}, 1.52), o), 4);  // the density alone: 2
+  o.probe = 1.4;  // larger spheres: the density alone decides
+  for (double r : {1.1, 1.52, 1.88, 2.5})
+    EXPECT_EQ(sphere_frequency(atom_at({}, r), o), frequency_for_density(r + 1.4, 2.0)) << r;
+  o.probe = 0;
+  o.min_density_radius = 0;
+  EXPECT_EQ(sphere_frequency(atom_at({}, 1.88), o), 3);
+  EXPECT_EQ(sphere_frequency(atom_at({}, 1.52), o), 2);
+  o.min_density_radius = 2.5;
+  o.frequency = 2;  // a fixed frequency still overrides everything
+  EXPECT_EQ(sphere_frequency(atom_at({}, 1.52), o), 2);
+  o.frequency = 0;
+  const std::vector<Atom> atoms{atom_at({}, 1.52)};
+  EXPECT_EQ(estimate_resources(atoms, o).sphere_faces, 320u);
+  EXPECT_EQ(plan_spheres(atoms, o).faces, 320u);
+}
+
+// The accuracy target at the defaults: total area and volume within 0.5 % of the exact
+// union of balls, for the van der Waals (probe 0) and the solvent-accessible (1.4) surface.
+class CrambinAccuracy : public ::testing::TestWithParam<double> {};
+
+TEST_P(CrambinAccuracy, WithinHalfAPercentOfTheExactUnionOfBalls) {
+  const double probe = GetParam();
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  std::vector<Vec3> centres;
+  std::vector<double> radii;
+  for (const Atom& a : s.atoms) {
+    centres.push_back(a.centre);
+    radii.push_back(a.radius + probe);
+  }
+  const BallUnionMeasure exact = measure_ball_union(centres, radii, 1000);
+  SurfaceOptions o;
+  o.spheres.probe = probe;
+  const SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  EXPECT_NEAR(surface_area(r.mesh), exact.area, 0.005 * exact.area) << "probe " << probe;
+  EXPECT_NEAR(signed_volume(r.mesh), exact.volume, 0.005 * exact.volume) << "probe " << probe;
+}
+
+INSTANTIATE_TEST_SUITE_P(BothProbes, CrambinAccuracy, ::testing::Values(0.0, 1.4));
 
 TEST(Surface, CrambinAreaAgreesWithLeeRichards) {
   // FreeSASA 2.1.2 (Lee-Richards, ProtOr radii, probe 1.4) gives 2999.32 A^2 for 1crn.pdb.

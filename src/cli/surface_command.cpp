@@ -55,8 +55,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->check(finite_number(0, 1e15))
       ->capture_default_str()
       ->group(sphere);
-  app.add_option("--density", spheres.density,
-                 "Icosphere vertices per square angstrom of sphere surface (MSMS's convention)")
+  std::ostringstream density_help;
+  density_help << "Icosphere vertices per square angstrom of sphere surface (MSMS's convention); a sphere under "
+               << spheres.min_density_radius << " A gets the frequency of one of " << spheres.min_density_radius
+               << " A (van der Waals spheres: docs/accuracy.md)";
+  app.add_option("--density", spheres.density, density_help.str())
       ->check(finite_number(0, 1e9, true))
       ->capture_default_str()
       ->group(sphere);

@@ -15,9 +15,13 @@ namespace molsurf {
 
 double sphere_radius(const Atom& atom, const SphereOptions& options) { return atom.radius + options.probe; }
 
+double density_radius(const Atom& atom, const SphereOptions& options) {
+  return std::max(sphere_radius(atom, options), options.min_density_radius);
+}
+
 int sphere_frequency(const Atom& atom, const SphereOptions& options) {
   return options.frequency > 0 ? options.frequency
-                               : frequency_for_density(sphere_radius(atom, options), options.density);
+                               : frequency_for_density(density_radius(atom, options), options.density);
 }
 
 Mesh atom_sphere(const Atom& atom, std::int32_t tag, const SphereOptions& options) {
@@ -51,7 +55,7 @@ constexpr double kSaturated = 1.8e19;  // just below 2^64
 double sphere_faces(const Atom& atom, const SphereOptions& options) {
   double n = options.frequency;
   if (options.frequency <= 0) {
-    const double r = sphere_radius(atom, options);
+    const double r = density_radius(atom, options);
     const double target = options.density * 4 * std::numbers::pi * r * r;
     n = std::sqrt(std::max(0.0, target - 2) / 10);
     // Within int range frequency_for_density decides exactly (it rounds to the nearest).
