@@ -238,6 +238,7 @@ Place place_from_sides(const std::array<int, 3>& side) {
 struct AtomPieces {
   std::vector<ImplicitPoint> points;
   std::vector<std::uint64_t> hashes;  // of the points' definitions (implicit points only)
+  std::size_t implicit_points = 0;
   std::vector<Triangle> triangles;
   std::size_t faces_inside = 0, faces_whole = 0, faces_cut = 0, crossings = 0;
 };
@@ -711,7 +712,10 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   out.crossings = crossings_;
   out.hashes.resize(out.points.size(), 0);
   for (std::size_t k = 0; k < out.points.size(); ++k)
-    if (!out.points[k].is_explicit()) out.hashes[k] = DefinitionHash{}(out.points[k]);
+    if (!out.points[k].is_explicit()) {
+      out.hashes[k] = DefinitionHash{}(out.points[k]);
+      ++out.implicit_points;
+    }
   return out;
 }
 
@@ -756,55 +760,94 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
 
   // Join: atoms in index order, points merged by definition, then points equal by exact
   // value but defined differently (degenerate contacts) merged too: only points whose
-  // filter boxes overlap are compared exactly.
+  // filter boxes overlap are compared exactly. The steps run in parallel where they are
+  // not linear scans, and number points as a serial scan would (in order of first
+  // appearance), so the mesh is the same for any thread count.
   start = Clock::now();
   Mesh& mesh = result.mesh;
-  // The atoms' points stay where they are; the join refers to them (hashed in parallel).
-  struct PointRef {
-    std::uint64_t hash;
-    const ImplicitPoint* point;
-  };
-  struct RefHash {
-    std::size_t operator()(const PointRef& r) const { return static_cast<std::size_t>(r.hash); }
-  };
-  struct RefEqual {
-    bool operator()(const PointRef& a, const PointRef& b) const {
-      return a.hash == b.hash && same_definition(*a.point, *b.point);
-    }
-  };
-  std::vector<const ImplicitPoint*> points;
-  std::unordered_map<PointRef, std::uint32_t, RefHash, RefEqual> table;
-  std::vector<std::uint32_t> global;
+  const auto atom_count = static_cast<std::int64_t>(pieces.size());
+  // Each atom's points and faces take a range of one global sequence.
+  std::vector<std::size_t> point_start(pieces.size() + 1, 0), face_start(pieces.size() + 1, 0),
+      implicit_start(pieces.size() + 1, 0);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    AtomPieces& p = pieces[i];
+    const AtomPieces& p = pieces[i];
     result.stats.faces_inside += p.faces_inside;
     result.stats.faces_whole += p.faces_whole;
     result.stats.faces_cut += p.faces_cut;
     result.stats.crossings += p.crossings;
-    global.resize(p.points.size());
-    // An atom's own corners are points of no other atom, unless two atoms have a vertex in
-    // common, which the merge by exact value below finds: they skip the table.
-    for (std::size_t k = 0; k < p.points.size(); ++k) {
-      if (p.points[k].is_explicit()) {
-        global[k] = static_cast<std::uint32_t>(points.size());
-        points.push_back(&p.points[k]);
-      } else {
-        const auto [it, inserted] =
-            table.try_emplace(PointRef{p.hashes[k], &p.points[k]}, static_cast<std::uint32_t>(points.size()));
-        if (inserted) points.push_back(&p.points[k]);
-        global[k] = it->second;
-      }
-    }
-    for (const Triangle& t : p.triangles) {
-      mesh.faces.push_back({global[t[0]], global[t[1]], global[t[2]]});
-      mesh.face_tags.push_back(static_cast<std::int32_t>(i));
-    }
-    p.triangles = {};
+    point_start[i + 1] = point_start[i] + p.points.size();
+    face_start[i + 1] = face_start[i] + p.triangles.size();
+    implicit_start[i + 1] = implicit_start[i] + p.implicit_points;
   }
-  table = {};
+  if (point_start.back() >= std::numeric_limits<std::uint32_t>::max())
+    throw Error("the union is too large to index: more than 4 billion points");
+  // Merge by definition: implicit points sorted by (hash, position); in a run of equal
+  // hashes, a point's representative is the first point of the run with its definition.
+  struct HashedPosition {
+    std::uint64_t hash;
+    std::uint32_t position;
+    bool operator<(const HashedPosition& o) const { return hash != o.hash ? hash < o.hash : position < o.position; }
+  };
+  std::vector<const ImplicitPoint*> sequence(point_start.back());
+  std::vector<std::uint32_t> representative(sequence.size());
+  std::vector<HashedPosition> hashed(implicit_start.back());
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+  for (std::int64_t i = 0; i < atom_count; ++i) {
+    const AtomPieces& p = pieces[i];
+    std::size_t next_implicit = implicit_start[i];
+    for (std::size_t k = 0; k < p.points.size(); ++k) {
+      const auto position = static_cast<std::uint32_t>(point_start[i] + k);
+      sequence[position] = &p.points[k];
+      representative[position] = position;
+      // An atom's own corners are points of no other atom, unless two atoms have a vertex
+      // in common, which the merge by exact value below finds.
+      if (!p.points[k].is_explicit()) hashed[next_implicit++] = {p.hashes[k], position};
+    }
+  }
+  __gnu_parallel::sort(hashed.begin(), hashed.end());
+  const auto hashed_count = static_cast<std::int64_t>(hashed.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t k = 0; k < hashed_count; ++k) {
+    std::int64_t first = k;
+    while (first > 0 && hashed[first - 1].hash == hashed[k].hash) --first;
+    const ImplicitPoint& point = *sequence[hashed[k].position];
+    for (std::int64_t j = first; j < k; ++j)
+      if (same_definition(*sequence[hashed[j].position], point)) {
+        representative[hashed[k].position] = hashed[j].position;
+        break;
+      }
+  }
+  hashed = {};
+  std::vector<const ImplicitPoint*> points;
+  std::vector<std::uint32_t> point_of(sequence.size());
+  for (std::size_t s = 0; s < sequence.size(); ++s) {
+    if (representative[s] == s) {
+      point_of[s] = static_cast<std::uint32_t>(points.size());
+      points.push_back(sequence[s]);
+    } else {
+      point_of[s] = point_of[representative[s]];
+    }
+  }
+  representative = {};
+  sequence = {};
+  mesh.faces.resize(face_start.back());
+  mesh.face_tags.resize(face_start.back());
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+  for (std::int64_t i = 0; i < atom_count; ++i) {
+    const auto& triangles = pieces[i].triangles;
+    for (std::size_t j = 0; j < triangles.size(); ++j) {
+      Triangle& t = mesh.faces[face_start[i] + j];
+      for (int c = 0; c < 3; ++c) t[c] = point_of[point_start[i] + triangles[j][c]];
+      mesh.face_tags[face_start[i] + j] = static_cast<std::int32_t>(i);
+    }
+  }
+  point_of = {};
+
   std::vector<std::pair<double, std::uint32_t>> order(points.size());
   std::vector<std::uint32_t> same(points.size());
-  for (std::uint32_t p = 0; p < points.size(); ++p) order[p] = {points[p]->coordinate(0).lo, p};
+  const auto point_count = static_cast<std::int64_t>(points.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t p = 0; p < point_count; ++p) order[p] = {points[p]->coordinate(0).lo, static_cast<std::uint32_t>(p)};
   std::iota(same.begin(), same.end(), 0u);
   __gnu_parallel::sort(order.begin(), order.end());  // a total order: the same for any thread count
   for (std::size_t k = 0; k < order.size(); ++k) {
@@ -818,18 +861,20 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     }
   }
   std::vector<std::uint32_t> vertex_of(points.size());
+  std::size_t vertex_count = 0;
   for (std::uint32_t p = 0; p < points.size(); ++p) {
     std::uint32_t root = p;
     while (same[root] != root) root = same[root];
-    if (root == p) {
-      vertex_of[p] = static_cast<std::uint32_t>(mesh.vertices.size());
-      mesh.vertices.push_back(output_coordinates(*points[p]));
-    } else {
-      vertex_of[p] = vertex_of[root];
-    }
+    vertex_of[p] = root == p ? static_cast<std::uint32_t>(vertex_count++) : vertex_of[root];
   }
-  for (Triangle& t : mesh.faces)
-    for (Index& v : t) v = vertex_of[v];
+  mesh.vertices.resize(vertex_count);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t p = 0; p < point_count; ++p)
+    if (same[p] == static_cast<std::uint32_t>(p)) mesh.vertices[vertex_of[p]] = output_coordinates(*points[p]);
+  const auto face_count = static_cast<std::int64_t>(mesh.faces.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t f = 0; f < face_count; ++f)
+    for (Index& v : mesh.faces[f]) v = vertex_of[v];
   result.stats.merged_points = points.size() - mesh.vertices.size();
   // Rounding the points to doubles, after every decision, can make a tiny piece
   // degenerate or fold it over its neighbour; the engine's repair fixes that by exact
@@ -848,10 +893,14 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   for (const Triangle& t : mesh.faces)
     for (int k = 0; k < 3; ++k) directed.push_back(std::uint64_t(t[k]) << 32 | t[(k + 1) % 3]);
   __gnu_parallel::sort(directed.begin(), directed.end());
-  for (std::uint64_t e : directed) {
-    const std::uint64_t reverse = (e << 32) | (e >> 32);
-    if (!std::binary_search(directed.begin(), directed.end(), reverse)) ++result.stats.open_edges;
+  std::size_t open_edges = 0;
+  const auto directed_count = static_cast<std::int64_t>(directed.size());
+#pragma omp parallel for schedule(static) reduction(+ : open_edges) num_threads(threads)
+  for (std::int64_t k = 0; k < directed_count; ++k) {
+    const std::uint64_t e = directed[k], reverse = (e << 32) | (e >> 32);
+    if (!std::binary_search(directed.begin(), directed.end(), reverse)) ++open_edges;
   }
+  result.stats.open_edges = open_edges;
   result.stats.seconds_join = seconds_since(start);
   result.stats.atoms = atoms.size();
   result.stats.duplicate_atoms = polyhedra.duplicates();
