@@ -108,12 +108,14 @@ class Cleaner {
 
   void run(CleanupStats& stats) {
     for (int pass = 0; pass < options_.passes; ++pass) {
+      // Every face's angle in parallel; the list in face order, then sorted.
+      std::vector<double> angle(m_.faces.size());
+      const auto nf = static_cast<std::int64_t>(m_.faces.size());
+#pragma omp parallel for schedule(static)
+      for (std::int64_t f = 0; f < nf; ++f) angle[f] = alive_[f] ? min_angle(static_cast<std::uint32_t>(f)) : 180;
       std::vector<std::pair<double, std::uint32_t>> distorted;
       for (std::uint32_t f = 0; f < m_.faces.size(); ++f)
-        if (alive_[f]) {
-          const double angle = min_angle(f);
-          if (angle < options_.min_angle_deg) distorted.emplace_back(angle, f);
-        }
+        if (alive_[f] && angle[f] < options_.min_angle_deg) distorted.emplace_back(angle[f], f);
       if (distorted.empty()) break;
       std::sort(distorted.begin(), distorted.end());
       std::size_t done = 0;
