@@ -7,6 +7,29 @@
 // replacements (which take precedence over the shared library's) turn null into
 // std::bad_alloc, which main() reports as "out of memory" in one line. Speed is
 // unchanged: malloc is still mimalloc's. Sanitizer builds keep their own allocator.
+//
+// use_large_pages(): mimalloc then asks the kernel for 2 MiB pages (transparent huge
+// pages, through madvise) for the segments it maps from then on. A surface run touches
+// most of its memory once, and on virtual machines a 4 KiB page fault is expensive: on
+// 2hhb the process takes 24 000 minor faults instead of 56 000, for 30 MB more resident
+// memory (docs/performance.md). Set before mimalloc starts (MIMALLOC_LARGE_OS_PAGES=1 in
+// the environment) it covers every segment: 7 000 faults.
+#include "cli/allocation.hpp"
+
+#if defined(MOLSURF_HAVE_MIMALLOC)
+#include <mimalloc.h>
+#endif
+
+namespace molsurf::cli {
+
+void use_large_pages() {
+#if defined(MOLSURF_HAVE_MIMALLOC)
+  mi_option_enable(mi_option_large_os_pages);
+#endif
+}
+
+}  // namespace molsurf::cli
+
 #if !defined(__SANITIZE_ADDRESS__)
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)

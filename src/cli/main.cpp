@@ -4,12 +4,14 @@
 #include <new>
 #include <stdexcept>
 
+#include "cli/allocation.hpp"
 #include "cli/commands.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace molsurf::cli;
+  use_large_pages();
   CLI::App app{
       "molsurf " MOLSURF_VERSION " - exact, watertight molecular surfaces.\n"
       "The solvent-accessible surface of a structure is the union of one sphere per atom\n"
