@@ -45,6 +45,9 @@ class BoxBvh {
   static BoxBvh for_faces(const Mesh& mesh, std::span<const std::uint8_t> include = {});
 
   std::size_t item_count() const { return item_count_; }
+  // Item ids in leaf order: neighbours in space are neighbours here, so queries made in
+  // this order walk the same nodes one after another.
+  std::span<const std::uint32_t> leaf_order() const { return items_; }
   std::size_t node_count() const { return node_count_; }
 
   // Calls visit(item_id) for every item whose box overlaps `query` (any order).

@@ -265,16 +265,16 @@ void check_self_intersections(const Mesh& mesh, const std::vector<std::uint8_t>&
 
   std::size_t intersecting = 0, contacts = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
-  const auto nf = static_cast<std::int64_t>(mesh.faces.size());
+  const std::span<const std::uint32_t> order = bvh.leaf_order();  // the testable faces
+  const auto count = static_cast<std::int64_t>(order.size());
   ParallelExceptions errors;
 #pragma omp parallel reduction(+ : intersecting, contacts)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
 #pragma omp for schedule(dynamic, 4096)
-    for (std::int64_t i = 0; i < nf; ++i)
-      errors.run(i, [&] {
-        if (!testable[i]) return;
-        const auto face_i = static_cast<std::size_t>(i);
+    for (std::int64_t k = 0; k < count; ++k)
+      errors.run(k, [&] {
+        const std::size_t face_i = order[k];
         bvh.for_each_overlap(geometry::face_box(mesh, face_i), [&](std::uint32_t j) {
           if (j <= face_i) return;  // each unordered pair once
           switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
