@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   molsurf::SurfaceOptions options;
+  options.method = molsurf::SurfaceMethod::pairwise;  // the method with merge levels
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--threads") options.threads = std::atoi(argv[i + 1]);
