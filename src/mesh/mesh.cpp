@@ -2,6 +2,8 @@
 
 #include "mesh/topology.hpp"
 
+#include <parallel/algorithm>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -124,7 +126,7 @@ long euler_characteristic(const Mesh& mesh) {
       used[t[i]] = 1;
       edges.emplace_back(std::minmax(t[i], t[(i + 1) % 3]));
     }
-  std::sort(edges.begin(), edges.end());
+  __gnu_parallel::sort(edges.begin(), edges.end());
   const auto edge_count = std::unique(edges.begin(), edges.end()) - edges.begin();
   const auto vertex_count = std::count(used.begin(), used.end(), 1);
   return static_cast<long>(vertex_count) - static_cast<long>(edge_count) +

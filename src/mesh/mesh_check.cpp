@@ -26,6 +26,8 @@
 //    (finite coordinates whose products overflow) is a defect too.
 #include "molsurf/mesh_check.hpp"
 
+#include <parallel/algorithm>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -250,7 +252,7 @@ std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8
     std::sort(t.begin(), t.end());
     keys.push_back(t);
   }
-  std::sort(keys.begin(), keys.end());
+  __gnu_parallel::sort(keys.begin(), keys.end());
   std::size_t duplicates = 0;
   for (std::size_t k = 1; k < keys.size(); ++k)
     if (keys[k] == keys[k - 1]) ++duplicates;
