@@ -4,7 +4,6 @@
 #include <initializer_list>
 #include <array>
 #include <cmath>
-#include <unordered_map>
 
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
@@ -28,8 +27,6 @@ double smallest_angle_of(const Mesh& m, const Triangle& t) {
   }
   return smallest;
 }
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
 
 // The same selection as smallest_angle_of(...) < kSliverDeg without trigonometry: the
 // smallest angle lies opposite the shortest edge, and its sine is |cross| over the
@@ -70,30 +67,34 @@ class Repairer {
   // Indexes only the faces that rounding can have touched: those with a rounded corner,
   // and every face around their corners (what collapses, flips and crossing tests read).
   Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
-           const std::vector<std::uint8_t>& rounded, const std::vector<std::uint8_t>& frozen)
+           const std::vector<std::uint8_t>& needs_repair, const std::vector<std::uint8_t>& frozen)
       : m_(m), operand_(operand), source_(source), frozen_(frozen), alive_(m.faces.size(), 1) {
     // Only faces near the ones rounding can have broken (degenerate faces, and slivers
     // with a rounded corner) are indexed: three rings of faces around them, so the link
     // condition, the moves of a collapse and the crossing counts around it (two rings)
-    // all see every face they read.
-    std::vector<std::uint8_t> mark(m.vertices.size(), 0), grown(m.vertices.size(), 0);
-    for (const Triangle& t : m.faces)
-      if (needs_repair(m, t, rounded))
-        for (Index v : t) mark[v] = 1;
+    // all see every face they read. The rings grow face-parallel: a face joins when a
+    // corner is marked, then its corners are marked.
+    const auto nf = static_cast<std::int64_t>(m.faces.size());
+    std::vector<std::uint8_t> mark(m.vertices.size(), 0), in_ring(m.faces.size(), 0);
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+      if (needs_repair[f])
+        for (Index v : m.faces[f]) mark[v] = 1;
     for (int ring = 0; ring < 3; ++ring) {
-      grown = mark;
-      for (const Triangle& t : m.faces)
-        if (mark[t[0]] || mark[t[1]] || mark[t[2]])
-          for (Index v : t) grown[v] = 1;
-      mark.swap(grown);
+#pragma omp parallel for schedule(static)
+      for (std::int64_t f = 0; f < nf; ++f) {
+        const Triangle& t = m.faces[f];
+        in_ring[f] = mark[t[0]] || mark[t[1]] || mark[t[2]];
+      }
+      for (std::size_t f = 0; f < m.faces.size(); ++f)
+        if (in_ring[f])
+          for (Index v : m.faces[f]) mark[v] = 1;
     }
     for (std::uint32_t f = 0; f < m.faces.size(); ++f) {
       const Triangle& t = m.faces[f];
-      if (mark[t[0]] || mark[t[1]] || mark[t[2]]) {
-        index_face(f);
-        indexed_.push_back(f);
-      }
+      if (mark[t[0]] || mark[t[1]] || mark[t[2]]) indexed_.push_back(f);
     }
+    slot_of_.assign(m.vertices.size(), kNoSlot);
+    for (std::uint32_t f : indexed_) index_face(f);
   }
 
   RepairOutcome run(const std::vector<std::uint8_t>& rounded) {
@@ -131,14 +132,40 @@ class Repairer {
  private:
   void index_face(std::uint32_t f) {
     const Triangle& t = m_.faces[f];
-    for (int i = 0; i < 3; ++i) edge_faces_[edge_key(t[i], t[(i + 1) % 3])].push_back(f);
-    for (Index v : t) vertex_faces_[v].push_back(f);
+    for (Index v : t) faces_of(v).push_back(f);
   }
   void unindex_face(std::uint32_t f) {
     const Triangle& t = m_.faces[f];
-    for (int i = 0; i < 3; ++i) std::erase(edge_faces_[edge_key(t[i], t[(i + 1) % 3])], f);
-    for (Index v : t) std::erase(vertex_faces_[v], f);
+    for (Index v : t) std::erase(faces_of(v), f);
   }
+  std::vector<std::uint32_t>& faces_of(Index v) {
+    if (slot_of_[v] == kNoSlot) {
+      slot_of_[v] = static_cast<std::uint32_t>(slots_.size());
+      slots_.emplace_back();
+    }
+    return slots_[slot_of_[v]];
+  }
+  const std::vector<std::uint32_t>* find_faces(Index v) const {
+    return slot_of_[v] == kNoSlot ? nullptr : &slots_[slot_of_[v]];
+  }
+  // The faces with edge ab, in the order they were indexed, a face once per such edge it
+  // has (a face with a repeated corner can have two).
+  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const {
+    std::vector<std::uint32_t> on;
+    const auto* around = find_faces(a);
+    if (around == nullptr) return on;
+    for (std::size_t k = 0; k < around->size(); ++k) {
+      const std::uint32_t g = (*around)[k];
+      if (std::find(around->begin(), around->begin() + static_cast<std::ptrdiff_t>(k), g) !=
+          around->begin() + static_cast<std::ptrdiff_t>(k))
+        continue;  // listed again for a repeated corner
+      const Triangle& t = m_.faces[g];
+      for (int i = 0; i < 3; ++i)
+        if ((t[i] == a && t[(i + 1) % 3] == b) || (t[i] == b && t[(i + 1) % 3] == a)) on.push_back(g);
+    }
+    return on;
+  }
+
   std::uint32_t add_face(const Triangle& t, std::uint32_t like) {
     const auto f = static_cast<std::uint32_t>(m_.faces.size());
     m_.faces.push_back(t);
@@ -179,8 +206,7 @@ class Repairer {
     const bool sliver = smallest_angle_deg(t) < kSliverDeg;
     std::vector<std::uint32_t> ring;
     auto faces_around = [&](Index v, std::vector<std::uint32_t>& out) {
-      if (const auto it = vertex_faces_.find(v); it != vertex_faces_.end())
-        out.insert(out.end(), it->second.begin(), it->second.end());
+      if (const auto* around = find_faces(v)) out.insert(out.end(), around->begin(), around->end());
     };
     for (Index v : t) faces_around(v, ring);
     if (sliver) {
@@ -216,11 +242,10 @@ class Repairer {
   std::size_t crossings_around(std::initializer_list<Index> centres) const {
     std::vector<std::uint32_t> faces;
     for (Index c : centres)
-      if (const auto it = vertex_faces_.find(c); it != vertex_faces_.end())
-        for (std::uint32_t g : it->second)
+      if (const auto* around_c = find_faces(c))
+        for (std::uint32_t g : *around_c)
           for (Index w : m_.faces[g])
-            if (const auto jt = vertex_faces_.find(w); jt != vertex_faces_.end())
-              faces.insert(faces.end(), jt->second.begin(), jt->second.end());
+            if (const auto* around_w = find_faces(w)) faces.insert(faces.end(), around_w->begin(), around_w->end());
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     std::size_t count = 0;
@@ -236,11 +261,11 @@ class Repairer {
   // clusters of near-coincident points clear over several passes.
   bool checked_collapse(Index u, Index v) {
     if (touches_frozen({u, v})) return false;
-    const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
-    if (on_edge.size() != 2 || !link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
+    const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
+    if (on_edge.size() != 2 || !link_condition(m_, faces_of(u), faces_of(v), on_edge, u, v)) return false;
     // A real face moving to u must not turn over; a sliver (rounding may already have
     // turned it) is judged by the crossing count alone.
-    for (std::uint32_t g : vertex_faces_[v]) {
+    for (std::uint32_t g : faces_of(v)) {
       if (std::find(on_edge.begin(), on_edge.end(), g) != on_edge.end()) continue;
       Triangle moved = m_.faces[g];
       for (Index& w : moved)
@@ -254,32 +279,27 @@ class Repairer {
     }
     const std::size_t before = crossings_around({u, v});
     std::vector<std::pair<std::uint32_t, Triangle>> undo;
-    for (std::uint32_t g : vertex_faces_[v]) undo.emplace_back(g, m_.faces[g]);
+    for (std::uint32_t g : faces_of(v)) undo.emplace_back(g, m_.faces[g]);
     if (!collapse(u, v)) return false;
     if (crossings_around({u}) < before) return true;
+    // Undone face by face: the faces on the edge were removed, the others moved to u.
     for (const auto& [g, tri] : undo) {
+      if (alive_[g]) unindex_face(g);
       m_.faces[g] = tri;
       alive_[g] = 1;
+      index_face(g);
     }
-    rebuild_index();
     return false;
-  }
-
-  void rebuild_index() {
-    edge_faces_.clear();
-    vertex_faces_.clear();
-    for (std::uint32_t f : candidates())
-      if (alive_[f]) index_face(f);
   }
 
   // Merges v into u (same position). Link condition: the vertices adjacent to both are
   // exactly the opposite corners of the faces on edge uv.
   bool collapse(Index u, Index v) {
     if (touches_frozen({u, v})) return false;
-    const std::vector<std::uint32_t> on_edge = edge_faces_[edge_key(u, v)];
-    if (!link_condition(m_, vertex_faces_[u], vertex_faces_[v], on_edge, u, v)) return false;
+    const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
+    if (!link_condition(m_, faces_of(u), faces_of(v), on_edge, u, v)) return false;
     for (std::uint32_t g : on_edge) kill(g);
-    const std::vector<std::uint32_t> moving = vertex_faces_[v];
+    const std::vector<std::uint32_t> moving = faces_of(v);
     for (std::uint32_t g : moving) {
       unindex_face(g);
       for (Index& w : m_.faces[g])
@@ -291,13 +311,13 @@ class Repairer {
 
   // Face f = (.., a, b, .. with corner c strictly inside edge ab): flip ab with the other face.
   bool flip(std::uint32_t f, Index a, Index b, Index c) {
-    const auto& around = edge_faces_[edge_key(a, b)];
+    const std::vector<std::uint32_t> around = faces_on_edge(a, b);
     if (around.size() != 2) return false;
     const std::uint32_t g = around[0] == f ? around[1] : around[0];
     Index d = 0;
     for (Index w : m_.faces[g])
       if (w != a && w != b) d = w;
-    if (edge_faces_.count(edge_key(c, d)) && !edge_faces_[edge_key(c, d)].empty()) return false;
+    if (!faces_on_edge(c, d).empty()) return false;
     if (touches_frozen({a, b, c, d})) return false;
     // f runs a -> b (corner order c, a, b), so g runs b -> a: new faces (a, d, c), (d, b, c).
     const Triangle& tf = m_.faces[f];
@@ -333,8 +353,11 @@ class Repairer {
   std::vector<std::uint8_t> alive_;
   std::vector<std::uint32_t> indexed_;
   std::uint32_t first_added_ = static_cast<std::uint32_t>(m_.faces.size());
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_faces_;
-  std::unordered_map<Index, std::vector<std::uint32_t>> vertex_faces_;
+  // The indexed faces around each vertex that has any, in the order they were indexed (a
+  // face with a repeated corner is listed once per occurrence): slot_of_[v] is v's row.
+  static constexpr std::uint32_t kNoSlot = ~0u;
+  std::vector<std::uint32_t> slot_of_;
+  std::vector<std::vector<std::uint32_t>> slots_;
 };
 
 }  // namespace
@@ -343,17 +366,17 @@ RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operan
                               std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded,
                               const std::vector<std::uint8_t>& frozen) {
   // Most results have no degenerate face and no sliver at a rounded point: then nothing
-  // is indexed at all.
-  bool any = false;
-  for (const Triangle& t : mesh.faces) {
-    if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
-    if (needs_repair(mesh, t, rounded)) {
-      any = true;
-      break;
-    }
+  // is indexed at all. The faces to repair are found in parallel (exact collinearity).
+  const auto nf = static_cast<std::int64_t>(mesh.faces.size());
+  std::vector<std::uint8_t> needs(mesh.faces.size(), 0);
+  std::size_t any = 0;
+#pragma omp parallel for schedule(static) reduction(+ : any)
+  for (std::int64_t f = 0; f < nf; ++f) {
+    needs[f] = needs_repair(mesh, mesh.faces[f], rounded);
+    any += needs[f];
   }
-  if (!any) return {};
-  return Repairer(mesh, face_operand, face_source, rounded, frozen).run(rounded);
+  if (any == 0) return {};
+  return Repairer(mesh, face_operand, face_source, needs, frozen).run(rounded);
 }
 
 }  // namespace molsurf::boolean_engine
