@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
-#include "molsurf/cleanup.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/report.hpp"
 #include "molsurf/surface_report.hpp"
@@ -166,89 +166,81 @@ int SurfaceCommand::run() const {
     std::cerr << "molsurf: note: --threads " << threads << " is more than the " << omp_get_num_procs()
               << " cores available: the result is the same, but not faster\n";
   SurfaceReport report;
-  auto clock = std::chrono::steady_clock::now();
+  const auto read_start = std::chrono::steady_clock::now();
   const Structure s = read_structure(structure, options);
-  report.seconds.read = seconds_since(clock);
-  check_sphere_resources(structure, s.atoms, spheres, max_faces);  // before any sphere is built
+  report.seconds.read = seconds_since(read_start);
+  // compute_surface refuses the same; checked here too so that nothing is printed first.
+  check_sphere_resources(structure, s.atoms, spheres, max_faces);
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
   if (!quiet) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 
-  SurfaceOptions surface_options;
-  surface_options.spheres = spheres;
-  surface_options.threads = threads;
-  surface_options.method = method == "pairwise" ? SurfaceMethod::pairwise : SurfaceMethod::one_pass;
-  std::optional<CleanupStats> cleanup;
-  MeshCheckOptions check_options;
-  check_options.self_intersections = !skip_check;
-  auto compute = [&](SurfaceMethod chosen) {
-    surface_options.method = chosen;
-    auto clock = std::chrono::steady_clock::now();
-    ProgressBar bar(!quiet);
-    surface_options.progress = [&](std::size_t done, std::size_t total) { bar.update(done, total); };
-    SurfaceResult sas = solvent_accessible_surface(s.atoms, surface_options);
-    if (!sas.fallback.empty() && !quiet) std::cerr << "molsurf: note: " << sas.fallback << "\n";
-    Mesh mesh = outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
-    report.seconds.surface += seconds_since(clock);
-    clock = std::chrono::steady_clock::now();
-    cleanup.reset();
-    if (!skip_cleanup) cleanup = improve_surface(mesh);
-    report.seconds.cleanup += seconds_since(clock);
-    clock = std::chrono::steady_clock::now();
-    MeshCheck verdict = check_mesh(mesh, check_options);
-    report.seconds.check += seconds_since(clock);
-    return std::pair{std::move(mesh), std::move(verdict)};
-  };
-  auto [surface, check] = compute(surface_options.method);
-  if (!check.valid() && surface_options.method == SurfaceMethod::one_pass) {
-    // The one-pass surface rounded to doubles can fail where the pairwise one, which
-    // repairs rounding between merges, does not: the reference method is the fallback.
-    if (!quiet) std::cerr << "molsurf: note: the one-pass surface failed its check; using the pairwise union\n";
-    std::tie(surface, check) = compute(SurfaceMethod::pairwise);
-  }
-  if (!check.valid()) {
-    // The promise is a valid surface or none: nothing is written.
-    std::string why;
-    for (const std::string& d : check.defects()) why += "\n  - " + d;
-    throw Error(out.string() + ": not written: the computed surface failed its check (a molsurf bug; please "
-                "report it with the input file and options):" + why);
-  }
+  ComputeSurfaceOptions compute_options;
+  compute_options.spheres = spheres;
+  compute_options.method = method == "pairwise" ? SurfaceMethod::pairwise : SurfaceMethod::one_pass;
+  compute_options.threads = threads;
+  compute_options.outer_only = outer_only;
+  compute_options.cleanup = !skip_cleanup;
+  compute_options.check_self_intersections = !skip_check;
+  compute_options.max_sphere_faces = max_faces;
+  compute_options.source = structure;
+  const ComputedSurface computed = [&] {
+    try {
+      ProgressBar bar(!quiet);  // erased when the call returns or throws
+      compute_options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
+        if (stage == SurfaceStage::union_) bar.update(done, total);
+      };
+      return compute_surface(s.atoms, compute_options);
+    } catch (const SurfaceCheckFailed& failed) {
+      if (!quiet)
+        for (const std::string& note : failed.notes()) std::cerr << "molsurf: note: " << note << "\n";
+      throw Error(out.string() + ": not written: " + failed.what());
+    }
+  }();
+  if (!quiet)
+    for (const std::string& note : computed.notes) std::cerr << "molsurf: note: " << note << "\n";
+  const Mesh& surface = computed.mesh;
+  report.seconds.surface = computed.seconds.union_;
+  report.seconds.cleanup = computed.seconds.cleanup;
+  report.seconds.check = computed.seconds.check;
 
   MeshWriteOptions write_options;
   write_options.atoms = s.atoms;
   write_options.probe_radius = spheres.probe;
   write_options.density = spheres.density;
+  MeshCheckOptions check_options;
+  check_options.self_intersections = !skip_check;
   // Lossy formats (.vert, .stl): the surface is checked again as the file will hold it.
-  clock = std::chrono::steady_clock::now();
-  const WrittenCheck written =
-      check_as_written(out, surface, check, write_options, check_options, [](const MeshCheck& c) { return c.valid(); });
+  auto clock = std::chrono::steady_clock::now();
+  const WrittenCheck written = check_as_written(out, surface, computed.check, write_options, check_options,
+                                                [](const MeshCheck& c) { return c.valid(); });
   report.seconds.check += seconds_since(clock);
   if (!written.note.empty() && !quiet) std::cerr << "molsurf: note: " << written.note << "\n";
-  const Mesh& stored = written.rounded ? *written.rounded : surface;  // what the file holds
 
   clock = std::chrono::steady_clock::now();
-  const std::vector<double> atom_area = area_per_atom(stored, s.atoms.size());
-  const SurfaceReport measured = make_surface_report(stored, written.check);
-  report.faces = measured.faces;
-  report.vertices = measured.vertices;
-  report.area = measured.area;
-  report.volume = measured.volume;
-  report.components = measured.components;
-  report.quality = measured.quality;
-  report.cleanup = cleanup;
-  report.valid = measured.valid;
-  report.defects = measured.defects;
+  // The report describes what the file holds: the rounded surface when the format rounds.
+  const SurfaceMeasures measures =
+      written.rounded ? measure_surface(*written.rounded, written.check, s.atoms.size()) : computed.measures;
+  report.faces = measures.faces;
+  report.vertices = measures.vertices;
+  report.area = measures.area;
+  report.volume = measures.volume;
+  report.components = measures.components;
+  report.quality = measures.quality;
+  report.cleanup = computed.cleanup;
+  report.valid = written.check.valid();
+  report.defects = written.check.defects();
   report.input = s.report;
   report.spheres = spheres;
-  report.threads = threads > 0 ? threads : omp_get_max_threads();
+  report.threads = computed.threads;
   report.output = out;
   report.outer_only = outer_only;
 
   // All or nothing: every file is complete before any replaces an old one.
   OutputFiles files;
   files.add_mesh(out, surface, written.options);
-  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
-  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, atom_area));
-  report.seconds.write = seconds_since(clock);
+  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, measures.atom_area));
+  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, measures.atom_area));
+  report.seconds.write = computed.seconds.measures + seconds_since(clock);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!quiet) {

@@ -12,6 +12,7 @@
 #include "molsurf/boolean.hpp"
 #include "molsurf/surface.hpp"
 #include "common/parallel_exceptions.hpp"
+#include "common/thread_count_scope.hpp"
 
 namespace molsurf {
 
@@ -50,20 +51,6 @@ std::vector<std::uint32_t> spatial_order(std::span<const Atom> atoms) {
   order_subtree(atoms, order, height);
   return order;
 }
-
-// The engine's own parallel loops use the default team size: make it the caller's thread
-// count for the duration (with one outer thread, inner regions would otherwise start
-// spinning workers on every core).
-class ThreadCountScope {
- public:
-  explicit ThreadCountScope(int threads) : previous_(omp_get_max_threads()) { omp_set_num_threads(threads); }
-  ~ThreadCountScope() { omp_set_num_threads(previous_); }
-  ThreadCountScope(const ThreadCountScope&) = delete;
-  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
-
- private:
-  int previous_;
-};
 
 }  // namespace
 
@@ -147,6 +134,9 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   SurfaceResult result;
   if (atoms.empty()) return result;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  // The engine's own parallel loops use the default team size: make it the caller's thread
+  // count for the duration (with one outer thread, inner regions would otherwise start
+  // spinning workers on every core).
   const ThreadCountScope thread_count(threads);
   if (options.method == SurfaceMethod::one_pass) {
     surface_detail::OnePassResult one_pass = surface_detail::one_pass_union(atoms, options.spheres, threads, options.progress);

@@ -1,0 +1,116 @@
+#pragma once
+// The whole surface job in one call: atoms -> spheres -> union -> cleanup -> check ->
+// measures. Every rule of the pipeline lives here, so the command line and any other
+// front end (a Python module) get the same surface from the same atoms:
+//  - the order: union, then (optionally) the cavities dropped, then cleanup, then check;
+//  - a one-pass surface that fails its check is recomputed by the pairwise union (the
+//    reference, which repairs rounding between merges), with a note;
+//  - a surface that still fails is never returned: the call throws SurfaceCheckFailed.
+// Writing files is not part of it (io.hpp, written_check.hpp, output_files.hpp).
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/cleanup.hpp"
+#include "molsurf/error.hpp"
+#include "molsurf/mesh.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/resource_limits.hpp"
+#include "molsurf/surface.hpp"
+#include "molsurf/surface_report.hpp"
+
+namespace molsurf {
+
+// The stages of compute_surface, in the order they run.
+enum class SurfaceStage { union_, cleanup, check, measures };
+const char* surface_stage_name(SurfaceStage stage);  // "union", "cleanup", "check", "measures"
+
+struct ComputeSurfaceOptions {
+  SphereOptions spheres;
+  SurfaceMethod method = SurfaceMethod::one_pass;
+  int threads = 0;  // for every stage; 0: all cores. The result does not depend on it.
+  bool outer_only = false;  // drop the cavities (components of negative volume) before cleanup
+  bool cleanup = true;      // improve_surface (paper §2.5)
+  CleanupOptions cleanup_options;
+  // The exact self-intersection test (the check's expensive part). Without it, closed,
+  // manifold, oriented, outward and non-degenerate are still required.
+  bool check_self_intersections = true;
+  // Refuse, before any sphere is built, spheres with more faces than this in all
+  // (check_sphere_resources); `source` names the input in that message.
+  std::uint64_t max_sphere_faces = kDefaultMaxSphereFaces;
+  std::filesystem::path source = "atoms";
+  // Called as the work advances with (stage, done, total), from one thread at a time but
+  // not always the caller's (the pairwise union reports from its worker threads). The
+  // union reports (atoms trimmed, atoms) or (merges done, merges); every stage also
+  // reports (0, 1) when it starts and (1, 1) when it ends. May be empty.
+  std::function<void(SurfaceStage, std::size_t, std::size_t)> progress;
+};
+
+struct ComputeSurfaceTimings {  // wall seconds, summed over both methods after a fallback
+  double union_ = 0;  // spheres and their union (and dropping the cavities, with outer_only)
+  double cleanup = 0;
+  double check = 0;
+  double measures = 0;
+  double total = 0;  // the whole call
+};
+
+// What users study on a surface: the numbers of a SurfaceReport, plus each atom's area.
+struct SurfaceMeasures {
+  std::size_t faces = 0, vertices = 0;
+  double area = 0, volume = 0;                 // volume: inside the outer surface, minus cavities
+  std::vector<ComponentMeasure> components;    // the largest outer surface first (measure_components)
+  Quality quality;
+  std::vector<double> atom_area;               // one per atom: the area of the faces tagged with it
+};
+
+// The measures of `mesh`, whose check_mesh result is `check` (area, volume and quality
+// come from there). For a surface as a lossy file holds it (written_check.hpp), too.
+SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::size_t atom_count);
+
+struct ComputedSurface {
+  Mesh mesh;  // passed its check; face tags are atom indices
+  SurfaceMethod method = SurfaceMethod::one_pass;  // the method that made `mesh`
+  // Why the requested method's surface was replaced (the fallback), one line each; empty
+  // when it was not.
+  std::vector<std::string> notes;
+  MeshCheck check;                       // of `mesh`: valid
+  std::optional<CleanupStats> cleanup;   // absent when cleanup is off
+  Quality quality_before;                // of the union, before cleanup
+  Quality quality_after;                 // of `mesh` (equal to quality_before without cleanup)
+  SurfaceMeasures measures;
+  ComputeSurfaceTimings seconds;
+  int threads = 1;  // used for every stage
+};
+
+// A surface that failed its check with both methods: a molsurf bug (never seen on the
+// test corpus), or coordinates beyond what doubles can resolve at this sphere size. The
+// message lists the defects; the surface itself is kept for a bug report.
+class SurfaceCheckFailed : public Error {
+ public:
+  SurfaceCheckFailed(MeshCheck check, Mesh mesh, std::vector<std::string> notes);
+  const MeshCheck& check() const { return failure_->check; }
+  const Mesh& mesh() const { return failure_->mesh; }
+  const std::vector<std::string>& notes() const { return failure_->notes; }
+
+ private:
+  struct Failure {
+    MeshCheck check;
+    Mesh mesh;
+    std::vector<std::string> notes;
+  };
+  std::shared_ptr<const Failure> failure_;  // shared: exceptions are copied
+};
+
+// The solvent-accessible surface of `atoms` (radius + probe each), cleaned, checked and
+// measured. No atoms give an empty mesh. Throws molsurf::Error when the spheres exceed
+// max_sphere_faces (or cannot be built), SurfaceCheckFailed as above.
+ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options = {});
+
+}  // namespace molsurf

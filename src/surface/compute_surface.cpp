@@ -1,0 +1,153 @@
+#include "molsurf/compute_surface.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <utility>
+
+#include "common/thread_count_scope.hpp"
+
+namespace molsurf {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string check_failure_message(const MeshCheck& check) {
+  std::string message =
+      "the computed surface failed its check (a molsurf bug; please report it with the input file and options):";
+  for (const std::string& defect : check.defects()) message += "\n  - " + defect;
+  return message;
+}
+
+// One method's surface, cleaned and checked: what compute_surface keeps or retries.
+struct Attempt {
+  Mesh mesh;
+  SurfaceMethod method = SurfaceMethod::one_pass;
+  MeshCheck check;
+  std::optional<CleanupStats> cleanup;
+};
+
+class Pipeline {
+ public:
+  Pipeline(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, int threads,
+           ComputeSurfaceTimings& seconds, std::vector<std::string>& notes)
+      : atoms_(atoms), options_(options), threads_(threads), seconds_(seconds), notes_(notes) {}
+
+  Attempt run(SurfaceMethod method) const {
+    Attempt attempt;
+    auto clock = std::chrono::steady_clock::now();
+    report(SurfaceStage::union_, 0, 1);
+    SurfaceOptions surface_options;
+    surface_options.spheres = options_.spheres;
+    surface_options.method = method;
+    surface_options.threads = threads_;
+    if (options_.progress)
+      surface_options.progress = [this](std::size_t done, std::size_t total) {
+        options_.progress(SurfaceStage::union_, done, total);
+      };
+    SurfaceResult sas = solvent_accessible_surface(atoms_, surface_options);
+    if (!sas.fallback.empty()) notes_.push_back(sas.fallback);
+    attempt.method = sas.method;
+    attempt.mesh = options_.outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
+    seconds_.union_ += seconds_since(clock);
+    report(SurfaceStage::union_, 1, 1);
+
+    if (options_.cleanup) {
+      clock = std::chrono::steady_clock::now();
+      report(SurfaceStage::cleanup, 0, 1);
+      attempt.cleanup = improve_surface(attempt.mesh, options_.cleanup_options);
+      seconds_.cleanup += seconds_since(clock);
+      report(SurfaceStage::cleanup, 1, 1);
+    }
+
+    clock = std::chrono::steady_clock::now();
+    report(SurfaceStage::check, 0, 1);
+    MeshCheckOptions check_options;
+    check_options.self_intersections = options_.check_self_intersections;
+    attempt.check = check_mesh(attempt.mesh, check_options);
+    seconds_.check += seconds_since(clock);
+    report(SurfaceStage::check, 1, 1);
+    return attempt;
+  }
+
+  void report(SurfaceStage stage, std::size_t done, std::size_t total) const {
+    if (options_.progress) options_.progress(stage, done, total);
+  }
+
+ private:
+  std::span<const Atom> atoms_;
+  const ComputeSurfaceOptions& options_;
+  int threads_;
+  ComputeSurfaceTimings& seconds_;
+  std::vector<std::string>& notes_;
+};
+
+}  // namespace
+
+const char* surface_stage_name(SurfaceStage stage) {
+  switch (stage) {
+    case SurfaceStage::union_: return "union";
+    case SurfaceStage::cleanup: return "cleanup";
+    case SurfaceStage::check: return "check";
+    case SurfaceStage::measures: return "measures";
+  }
+  return "?";
+}
+
+SurfaceCheckFailed::SurfaceCheckFailed(MeshCheck check, Mesh mesh, std::vector<std::string> notes)
+    : Error(check_failure_message(check)),
+      failure_(std::make_shared<const Failure>(Failure{std::move(check), std::move(mesh), std::move(notes)})) {}
+
+SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::size_t atom_count) {
+  SurfaceMeasures m;
+  m.faces = mesh.face_count();
+  m.vertices = mesh.vertex_count();
+  m.area = check.area;
+  m.volume = check.volume;
+  m.components = measure_components(mesh);
+  m.quality = check.quality;
+  m.atom_area = area_per_atom(mesh, atom_count);
+  return m;
+}
+
+ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  // Before any sphere is built: a typo in the density must not run the machine out of memory.
+  check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
+  ComputedSurface result;
+  result.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  // Every stage's parallel loops (union, cleanup, check) use the same team size.
+  const ThreadCountScope thread_count(result.threads);
+  const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
+
+  Attempt attempt = pipeline.run(options.method);
+  if (!attempt.check.valid() && attempt.method == SurfaceMethod::one_pass) {
+    // The one-pass surface rounded to doubles can fail where the pairwise one, which
+    // repairs rounding between merges, does not: the reference method is the fallback.
+    result.notes.push_back("the one-pass surface failed its check; using the pairwise union");
+    attempt = pipeline.run(SurfaceMethod::pairwise);
+  }
+  // The promise is a valid surface or none.
+  if (!attempt.check.valid())
+    throw SurfaceCheckFailed(std::move(attempt.check), std::move(attempt.mesh), std::move(result.notes));
+
+  const auto clock = std::chrono::steady_clock::now();
+  pipeline.report(SurfaceStage::measures, 0, 1);
+  result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size());
+  result.seconds.measures = seconds_since(clock);
+  pipeline.report(SurfaceStage::measures, 1, 1);
+
+  result.mesh = std::move(attempt.mesh);
+  result.method = attempt.method;
+  result.check = std::move(attempt.check);
+  result.cleanup = attempt.cleanup;
+  result.quality_after = result.check.quality;
+  result.quality_before = result.cleanup ? result.cleanup->before : result.quality_after;
+  result.seconds.total = seconds_since(start);
+  return result;
+}
+
+}  // namespace molsurf

@@ -1,0 +1,192 @@
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "atom_fixtures.hpp"
+#include "molsurf/atoms.hpp"
+#include "molsurf/cleanup.hpp"
+#include "molsurf/compute_surface.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/surface.hpp"
+#include "molsurf/surface_report.hpp"
+
+namespace molsurf {
+namespace {
+
+const std::string kData = MOLSURF_DATA_DIR;
+
+using testing::atom_at;
+
+const Structure& crambin() {
+  static const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  return s;
+}
+
+bool same_mesh(const Mesh& a, const Mesh& b) {
+  if (a.faces != b.faces || a.face_tags != b.face_tags || a.vertices.size() != b.vertices.size()) return false;
+  for (std::size_t v = 0; v < a.vertices.size(); ++v)
+    if (a.vertices[v].x != b.vertices[v].x || a.vertices[v].y != b.vertices[v].y || a.vertices[v].z != b.vertices[v].z)
+      return false;
+  return true;
+}
+
+// The stages as the command line ran them before compute_surface existed: union, cleanup,
+// check, measures. The one call must give exactly this surface and these numbers.
+TEST(ComputeSurface, EqualsTheStagesRunOneByOneOnCrambin) {
+  const std::vector<Atom>& atoms = crambin().atoms;
+  SurfaceOptions surface_options;
+  Mesh expected = solvent_accessible_surface(atoms, surface_options).mesh;
+  const CleanupStats cleanup = improve_surface(expected);
+  const MeshCheck check = check_mesh(expected);
+  ASSERT_TRUE(check.valid());
+  const SurfaceReport report = make_surface_report(expected, check);
+  const std::vector<double> atom_area = area_per_atom(expected, atoms.size());
+
+  const ComputedSurface r = compute_surface(atoms);
+  EXPECT_TRUE(same_mesh(r.mesh, expected));
+  EXPECT_EQ(r.method, SurfaceMethod::one_pass);
+  EXPECT_TRUE(r.notes.empty());
+  EXPECT_TRUE(r.check.valid());
+  EXPECT_TRUE(r.check.self_intersections_checked);
+  EXPECT_EQ(r.measures.faces, report.faces);
+  EXPECT_EQ(r.measures.vertices, report.vertices);
+  EXPECT_EQ(r.measures.area, report.area);
+  EXPECT_EQ(r.measures.volume, report.volume);
+  ASSERT_EQ(r.measures.components.size(), report.components.size());
+  for (std::size_t c = 0; c < report.components.size(); ++c) {
+    EXPECT_EQ(r.measures.components[c].faces, report.components[c].faces);
+    EXPECT_EQ(r.measures.components[c].volume, report.components[c].volume);
+  }
+  EXPECT_EQ(r.measures.atom_area, atom_area);
+  ASSERT_TRUE(r.cleanup.has_value());
+  EXPECT_EQ(r.cleanup->collapses, cleanup.collapses);
+  EXPECT_EQ(r.cleanup->flips, cleanup.flips);
+  EXPECT_EQ(r.quality_before.below_5deg, cleanup.before.below_5deg);
+  EXPECT_EQ(r.quality_after.min_angle_deg, check.quality.min_angle_deg);
+  EXPECT_EQ(r.quality_after.below_5deg, check.quality.below_5deg);
+  EXPECT_LT(r.quality_after.below_5deg, r.quality_before.below_5deg);  // the cleanup did something
+  // Crambin at the defaults: one outer surface and its cavities, area ~ 3000 A^2.
+  EXPECT_GT(r.measures.area, 2500);
+  EXPECT_LT(r.measures.area, 3500);
+  EXPECT_NEAR(std::accumulate(r.measures.atom_area.begin(), r.measures.atom_area.end(), 0.0), r.measures.area,
+              1e-9 * r.measures.area);
+}
+
+TEST(ComputeSurface, PairwiseMethodGivesTheSameAreaAndVolume) {
+  ComputeSurfaceOptions options;
+  options.method = SurfaceMethod::pairwise;
+  options.cleanup = false;
+  const ComputedSurface pairwise = compute_surface(crambin().atoms, options);
+  options.method = SurfaceMethod::one_pass;
+  const ComputedSurface one_pass = compute_surface(crambin().atoms, options);
+  EXPECT_EQ(pairwise.method, SurfaceMethod::pairwise);
+  EXPECT_NEAR(pairwise.measures.area, one_pass.measures.area, 1e-12 * one_pass.measures.area);
+  EXPECT_NEAR(pairwise.measures.volume, one_pass.measures.volume, 1e-12 * one_pass.measures.volume);
+}
+
+// Two atoms 1e17 A from the origin: there a double's spacing (16 A) exceeds the spheres,
+// so every method's surface is degenerate. The one-pass surface fails, the pairwise
+// fallback fails too, and the call returns nothing.
+TEST(ComputeSurface, FailedCheckReturnsNoSurface) {
+  const std::vector<Atom> atoms{atom_at({1e17, 0, 0}, 1.7), atom_at({1e17 + 2, 0, 0}, 1.7)};
+  try {
+    const ComputedSurface r = compute_surface(atoms);
+    ADD_FAILURE() << "a surface was returned: valid " << r.check.valid() << ", " << r.measures.faces << " faces";
+  } catch (const SurfaceCheckFailed& failed) {
+    EXPECT_FALSE(failed.check().valid());
+    EXPECT_GT(failed.mesh().face_count(), 0u);  // kept for a bug report
+    ASSERT_EQ(failed.notes().size(), 1u);
+    EXPECT_NE(failed.notes()[0].find("pairwise"), std::string::npos) << failed.notes()[0];
+    const std::string message = failed.what();
+    EXPECT_NE(message.find("failed its check"), std::string::npos) << message;
+    EXPECT_NE(message.find("degenerate"), std::string::npos) << message;
+  }
+}
+
+TEST(ComputeSurface, TimingsAndProgressCoverEveryStage) {
+  std::vector<SurfaceStage> started;
+  std::size_t union_reports = 0;
+  ComputeSurfaceOptions options;
+  options.progress = [&](SurfaceStage stage, std::size_t done, std::size_t total) {
+    EXPECT_LE(done, total);
+    if (done == 0) started.push_back(stage);
+    if (stage == SurfaceStage::union_) ++union_reports;
+  };
+  const ComputedSurface r = compute_surface(crambin().atoms, options);
+  const std::vector<SurfaceStage> order{SurfaceStage::union_, SurfaceStage::cleanup, SurfaceStage::check,
+                                        SurfaceStage::measures};
+  EXPECT_EQ(started, order);
+  EXPECT_GT(union_reports, 2u);  // start, the union's own (done, total), end
+  const ComputeSurfaceTimings& t = r.seconds;
+  EXPECT_GT(t.union_, 0);
+  EXPECT_GT(t.cleanup, 0);
+  EXPECT_GT(t.check, 0);
+  EXPECT_GT(t.measures, 0);
+  EXPECT_GE(t.total, t.union_ + t.cleanup + t.check + t.measures);
+  EXPECT_EQ(std::string(surface_stage_name(SurfaceStage::union_)), "union");
+  EXPECT_EQ(std::string(surface_stage_name(SurfaceStage::measures)), "measures");
+}
+
+TEST(ComputeSurface, CleanupOff) {
+  ComputeSurfaceOptions options;
+  options.cleanup = false;
+  const ComputedSurface r = compute_surface(crambin().atoms, options);
+  EXPECT_FALSE(r.cleanup.has_value());
+  EXPECT_TRUE(r.check.valid());
+  EXPECT_EQ(r.seconds.cleanup, 0);
+  EXPECT_EQ(r.quality_before.below_5deg, r.quality_after.below_5deg);
+  EXPECT_EQ(r.quality_before.min_angle_deg, r.quality_after.min_angle_deg);
+  const Mesh union_only = solvent_accessible_surface(crambin().atoms, SurfaceOptions{}).mesh;
+  EXPECT_TRUE(same_mesh(r.mesh, union_only));
+  const ComputedSurface cleaned = compute_surface(crambin().atoms);
+  EXPECT_NEAR(cleaned.measures.area, r.measures.area, 1e-3 * r.measures.area);  // the cleanup's area budget
+}
+
+TEST(ComputeSurface, OuterOnlyDropsTheCavities) {
+  const ComputedSurface all = compute_surface(crambin().atoms);
+  std::size_t cavities = 0;
+  for (const ComponentMeasure& c : all.measures.components) cavities += c.cavity();
+  ASSERT_GT(cavities, 0u);  // crambin at probe 1.4 has cavities; otherwise this test shows nothing
+  ComputeSurfaceOptions options;
+  options.outer_only = true;
+  const ComputedSurface outer = compute_surface(crambin().atoms, options);
+  for (const ComponentMeasure& c : outer.measures.components) EXPECT_FALSE(c.cavity());
+  EXPECT_GT(outer.measures.volume, all.measures.volume);  // cavities no longer subtracted
+}
+
+TEST(ComputeSurface, ThreadCountDoesNotChangeTheSurface) {
+  ComputeSurfaceOptions options;
+  options.threads = 1;
+  const ComputedSurface one = compute_surface(crambin().atoms, options);
+  options.threads = 2;
+  const ComputedSurface two = compute_surface(crambin().atoms, options);
+  EXPECT_EQ(one.threads, 1);
+  EXPECT_EQ(two.threads, 2);
+  EXPECT_TRUE(same_mesh(one.mesh, two.mesh));
+}
+
+TEST(ComputeSurface, NoAtomsGiveAnEmptySurface) {
+  const ComputedSurface r = compute_surface({});
+  EXPECT_EQ(r.mesh.face_count(), 0u);
+  EXPECT_EQ(r.measures.area, 0);
+  EXPECT_TRUE(r.measures.components.empty());
+}
+
+TEST(ComputeSurface, TooManySphereFacesAreRefusedBeforeAnySphereIsBuilt) {
+  ComputeSurfaceOptions options;
+  options.max_sphere_faces = 1000;
+  options.source = "crambin.pdb";
+  try {
+    compute_surface(crambin().atoms, options);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("crambin.pdb: ", 0), 0u) << message;
+    EXPECT_NE(message.find("faces"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace molsurf
