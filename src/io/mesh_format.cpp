@@ -10,6 +10,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "io/coordinate_range.hpp"
 #include "io/mesh_formats.hpp"
 #include "molsurf/error.hpp"
 
@@ -179,11 +180,15 @@ void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t ver
                           static_cast<Index>(polygon[i + 1])});
 }
 
-void check_finite_vertices(const Mesh& mesh, const path& file) {
+void check_vertex_coordinates(const Mesh& mesh, const path& file) {
+  static constexpr const char* kAxes[] = {"x", "y", "z"};
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& p = mesh.vertices[v];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      fail(file, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+    const double xyz[] = {p.x, p.y, p.z};
+    for (int axis = 0; axis < 3; ++axis)
+      detail::check_coordinate_range(file, 0, xyz[axis], "vertex " + std::to_string(v + 1) + " of " +
+                                                             std::to_string(mesh.vertex_count()) + ": " +
+                                                             kAxes[axis] + " coordinate");
   }
 }
 

@@ -98,8 +98,9 @@ class LineReader {
 void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t vertex_count,
                  const path& file, std::size_t line, int first_index = 0);
 
-// Rejects non-finite coordinates, which no geometry downstream can use.
-void check_finite_vertices(const Mesh& mesh, const path& file);
+// Rejects non-finite coordinates and those of magnitude 1e16 or more, as the structure
+// readers do (coordinate_range.hpp); "vertex N of M" counts from 1 in file order.
+void check_vertex_coordinates(const Mesh& mesh, const path& file);
 
 // Little-endian helpers for binary formats (the host may be either).
 bool host_is_little_endian();

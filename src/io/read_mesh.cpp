@@ -1,5 +1,6 @@
 // read_mesh: picks the reader from the extension, then checks what every reader
-// promises (indices in range, finite coordinates, one tag per face or none).
+// promises (indices in range, coordinates finite and below 1e16 in magnitude, one tag per
+// face or none).
 #include "io/mesh_formats.hpp"
 #include "molsurf/error.hpp"
 
@@ -25,7 +26,7 @@ Mesh read_by_format(const std::filesystem::path& path, MeshFormat format) {
 
 Mesh read_mesh(const std::filesystem::path& path) {
   Mesh mesh = read_by_format(path, mesh_format_from_path(path));
-  mesh_io::check_finite_vertices(mesh, path);
+  mesh_io::check_vertex_coordinates(mesh, path);
   if (mesh.has_tags() && mesh.face_tags.size() != mesh.face_count())
     fail(path, "internal: " + std::to_string(mesh.face_tags.size()) + " tags for " +
                    std::to_string(mesh.face_count()) + " faces");

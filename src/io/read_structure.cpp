@@ -103,14 +103,6 @@ std::string escaped(std::string_view field) {
   return text;
 }
 
-void check_coordinate_range(const std::filesystem::path& path, std::size_t line, double value,
-                            const std::string& what) {
-  if (std::abs(value) < kMaxCoordinate) return;
-  char text[40];
-  std::snprintf(text, sizeof text, "%g", value);
-  fail(path, line, what + " " + text + " is out of range (its magnitude must be below 1e16 angstrom)");
-}
-
 void fail_unknown_model(const std::filesystem::path& path, int requested,
                         const std::vector<int>& available) {
   std::string list;

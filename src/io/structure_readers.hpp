@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/coordinate_range.hpp"
 #include "molsurf/atoms.hpp"
 
 namespace molsurf::detail {
@@ -68,15 +69,6 @@ std::string read_text_file(const std::filesystem::path& path);
 // Element (upper case) from an atom name when the file gives none, following gemmi's rule
 // for PDB names with the alignment lost (PQR, xyzr): see read_structure.cpp.
 std::string infer_element(std::string_view atom_name, std::string_view residue_name);
-
-// Coordinates (and radii) must be below this in magnitude. Beyond it the spacing of
-// doubles exceeds 1 angstrom, so no atom is resolved any more; such numbers are input
-// errors (a units mix-up, a corrupt column), not something to compute with.
-inline constexpr double kMaxCoordinate = 1e16;
-// Fails with "FILE:LINE: WHAT VALUE is out of range ..." unless |value| < kMaxCoordinate
-// (line 0: no line, e.g. mmCIF through gemmi; `what` then names the atom).
-void check_coordinate_range(const std::filesystem::path& path, std::size_t line, double value,
-                            const std::string& what);
 
 // A field of a file quoted for a message: at most 24 characters, with anything but
 // printable ASCII shown as \xNN, so a binary file never reaches the terminal raw.
