@@ -1,6 +1,7 @@
 #include "boolean/repair_rounding.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <initializer_list>
 #include <array>
 #include <cmath>
@@ -13,23 +14,17 @@ namespace molsurf::boolean_engine {
 
 namespace {
 
-// Faces whose smallest angle is below this are slivers: the only faces that rounding to
-// doubles (an error of about 1e-16 relative) can turn over. It selects which faces get the
-// exact crossing test; it decides nothing.
+// Rounding a point to doubles moves it by up to half an ulp of its coordinates (about 1e-16
+// relative). Only two kinds of faces can be turned over by that: slivers, whose smallest
+// angle is below kSliverDeg, and tiny faces, whose height is within kTinyUlps ulps of their
+// coordinates (where two solids' nearly coincident vertices meet, e.g. two crossing
+// cylinders whose rings meet at a point). Both select which faces get the exact crossing
+// test; they decide nothing.
 constexpr double kSliverDeg = 0.1;
+constexpr double kTinyUlps = 64;
 
-double smallest_angle_of(const Mesh& m, const Triangle& t) {
-  double smallest = 180;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& p = m.vertices[t[i]];
-    const Vec3 u = m.vertices[t[(i + 1) % 3]] - p, w = m.vertices[t[(i + 2) % 3]] - p;
-    smallest = std::min(smallest, std::atan2(norm(cross(u, w)), dot(u, w)) * 57.29577951308232);
-  }
-  return smallest;
-}
-
-// The same selection as smallest_angle_of(...) < kSliverDeg without trigonometry: the
-// smallest angle lies opposite the shortest edge, and its sine is |cross| over the
+// Smallest angle below kSliverDeg, without trigonometry: the smallest angle lies opposite
+// the shortest edge, and its sine is |cross| over the
 // product of the two longer edges. Only selects faces for exact tests.
 bool is_sliver(const Mesh& m, const Triangle& t) {
   const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
@@ -40,6 +35,19 @@ bool is_sliver(const Mesh& m, const Triangle& t) {
   static const double sine = std::sin(kSliverDeg * 3.141592653589793 / 180);
   return cross2 < sine * sine * l[1] * l[2] * (1 + 1e-9);
 }
+
+bool is_tiny(const Mesh& m, const Triangle& t) {
+  const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+  double scale = 0;
+  for (const Vec3* p : {&a, &b, &c}) scale = std::max({scale, std::fabs(p->x), std::fabs(p->y), std::fabs(p->z)});
+  const double ulp = scale * std::numeric_limits<double>::epsilon(), reach = kTinyUlps * ulp;
+  const double longest2 = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+  const Vec3 n = cross(b - a, c - a);
+  return dot(n, n) < reach * reach * longest2;  // height = |n| / longest edge
+}
+
+// A face that rounding can have turned over (see kSliverDeg).
+bool may_turn_over(const Mesh& m, const Triangle& t) { return is_sliver(m, t) || is_tiny(m, t); }
 
 bool degenerate(const Mesh& m, const Triangle& t) {
   if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
@@ -55,11 +63,12 @@ bool strictly_between(const Vec3& a, const Vec3& x, const Vec3& b) {
   return false;
 }
 
-// What rounding can have broken: a face with a rounded corner that is degenerate or a
-// sliver (a face of input corners only is a piece of a valid input face).
+// What rounding can have broken: a face with a rounded corner that is degenerate or that
+// rounding can have turned over (a face of input corners only is a piece of a valid input
+// face).
 bool needs_repair(const Mesh& m, const Triangle& t, const std::vector<std::uint8_t>& rounded) {
   if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) return false;
-  return is_sliver(m, t) || degenerate(m, t);
+  return may_turn_over(m, t) || degenerate(m, t);
 }
 
 class Repairer {
@@ -111,7 +120,7 @@ class Repairer {
         if (!alive_[f]) continue;
         const Triangle& t = m_.faces[f];
         if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
-        if (smallest_angle_deg(t) >= kSliverDeg) continue;  // rounding (~1e-16) cannot turn it over
+        if (!may_turn_over(m_, t)) continue;  // rounding (~1e-16) cannot turn it over
         if (crosses_a_neighbour(f)) changed |= unfold(f);
       }
       if (!changed) break;
@@ -203,7 +212,7 @@ class Repairer {
   // what is tested; the test itself is exact.
   bool crosses_a_neighbour(std::uint32_t f) const {
     const Triangle& t = m_.faces[f];
-    const bool sliver = smallest_angle_deg(t) < kSliverDeg;
+    const bool sliver = may_turn_over(m_, t);
     std::vector<std::uint32_t> ring;
     auto faces_around = [&](Index v, std::vector<std::uint32_t>& out) {
       if (const auto* around = find_faces(v)) out.insert(out.end(), around->begin(), around->end());
@@ -221,7 +230,6 @@ class Repairer {
     return false;
   }
 
-  double smallest_angle_deg(const Triangle& t) const { return smallest_angle_of(m_, t); }
 
   // Collapses an edge of face f, shortest first, when the faces then around the kept
   // vertex turn none over and cross nothing around them (exact).
@@ -273,7 +281,7 @@ class Repairer {
       const Vec3 &a = m_.vertices[moved[0]], &b = m_.vertices[moved[1]], &c = m_.vertices[moved[2]];
       if (geometry::collinear3d(a, b, c)) return false;
       const Triangle& old = m_.faces[g];
-      if (smallest_angle_deg(old) < kSliverDeg) continue;
+      if (may_turn_over(m_, old)) continue;
       const Vec3 n_old = cross(m_.vertices[old[1]] - m_.vertices[old[0]], m_.vertices[old[2]] - m_.vertices[old[0]]);
       if (!(dot(cross(b - a, c - a), n_old) > 0)) return false;
     }
