@@ -8,7 +8,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -25,6 +24,7 @@
 #include "geometry/implicit_point.hpp"
 #include "geometry/predicates.hpp"
 #include "surface/atom_polyhedra.hpp"
+#include "surface/point_definition.hpp"
 
 namespace molsurf::surface_detail {
 
@@ -133,30 +133,12 @@ bool inside_closed(const ImplicitPoint& x, const Neighbour& n) {
   throw std::logic_error("one-pass union: a point in no face's cone");
 }
 
-// Points are merged by definition: the same kind and the same defining doubles (edges in
-// canonical order, three-plane points with their planes sorted) are the same point, so
-// the faces and atoms that meet at a point find it without arithmetic. Points that are
-// equal with different definitions (degenerate contacts) are merged after the join by
-// exact value.
+// Points are merged by definition (PointDefinition: the same input elements name the same
+// point), so the faces and atoms that meet at a point find it without arithmetic. Points
+// that are equal with different definitions (degenerate contacts) are merged after the
+// join by exact value.
 struct DefinitionHash {
-  std::size_t operator()(const ImplicitPoint& p) const {
-    std::uint64_t h = static_cast<std::uint64_t>(p.kind());
-    for (double x : p.defining_values()) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &x, sizeof bits);
-      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
-      h ^= h >> 29;
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
-bool same_definition(const ImplicitPoint& a, const ImplicitPoint& b) {
-  if (a.kind() != b.kind()) return false;
-  const auto x = a.defining_values(), y = b.defining_values();
-  return std::memcmp(x.data(), y.data(), x.size_bytes()) == 0;
-}
-struct DefinitionEqual {
-  bool operator()(const ImplicitPoint& a, const ImplicitPoint& b) const { return same_definition(a, b); }
+  std::size_t operator()(const PointDefinition& d) const { return static_cast<std::size_t>(d.hash()); }
 };
 
 enum class Plane : std::uint8_t { cuts, coplanar_same, coplanar_opposite };
@@ -179,6 +161,7 @@ struct Segment {
 // steady state).
 struct FaceWork {
   std::vector<ImplicitPoint> points;
+  std::vector<PointDefinition> definitions;  // of points
   std::vector<Place> places;
   std::vector<std::vector<std::uint32_t>> on_neighbour;  // per point: neighbours whose boundary holds it
   std::vector<Segment> segments;
@@ -196,6 +179,7 @@ struct FaceWork {
 
   void clear() {
     points.clear();
+    definitions.clear();
     places.clear();
     on_neighbour.clear();
     segments.clear();
@@ -203,17 +187,22 @@ struct FaceWork {
     relevant.clear();
   }
 
-  // The id of x, merged with an equal point already there.
-  std::uint32_t add(const ImplicitPoint& x, Place place, std::uint32_t neighbour) {
+  // The id of the point d defines, merged with an equal point already there.
+  std::uint32_t add(const PointDefinition& d, const AtomPolyhedra& polyhedra, Place place, std::uint32_t neighbour) {
+    auto merge = [&](std::uint32_t k) {
+      // The simplest place wins (a corner over an edge over the interior).
+      if (place.where < places[k].where) places[k] = place;
+      auto& on = on_neighbour[k];
+      if (neighbour != ~0u && std::find(on.begin(), on.end(), neighbour) == on.end()) on.push_back(neighbour);
+      return k;
+    };
     for (std::uint32_t k = 0; k < points.size(); ++k)
-      if (same_definition(points[k], x) || geometry::same_point(points[k], x)) {
-        // The simplest place wins (a corner over an edge over the interior).
-        if (place.where < places[k].where) places[k] = place;
-        auto& on = on_neighbour[k];
-        if (neighbour != ~0u && std::find(on.begin(), on.end(), neighbour) == on.end()) on.push_back(neighbour);
-        return k;
-      }
+      if (definitions[k] == d) return merge(k);
+    const ImplicitPoint x = construct(d, polyhedra);
+    for (std::uint32_t k = 0; k < points.size(); ++k)
+      if (geometry::same_point(points[k], x)) return merge(k);
     points.push_back(x);
+    definitions.push_back(d);
     places.push_back(place);
     on_neighbour.emplace_back();
     if (neighbour != ~0u) on_neighbour.back().push_back(neighbour);
@@ -236,7 +225,7 @@ Place place_from_sides(const std::array<int, 3>& side) {
 
 // The output of one atom: its kept pieces, with points merged by exact value.
 struct AtomPieces {
-  std::vector<ImplicitPoint> points;
+  std::vector<PointDefinition> points;
   std::vector<std::uint64_t> hashes;  // of the points' definitions (implicit points only)
   std::size_t implicit_points = 0;
   std::vector<Triangle> triangles;
@@ -245,14 +234,14 @@ struct AtomPieces {
 
 class PointTable {
  public:
-  std::uint32_t add(const ImplicitPoint& x, std::vector<ImplicitPoint>& points) {
-    auto [it, inserted] = ids_.try_emplace(x, static_cast<std::uint32_t>(points.size()));
-    if (inserted) points.push_back(x);
+  std::uint32_t add(const PointDefinition& d, std::vector<PointDefinition>& points) {
+    auto [it, inserted] = ids_.try_emplace(d, static_cast<std::uint32_t>(points.size()));
+    if (inserted) points.push_back(d);
     return it->second;
   }
 
  private:
-  std::unordered_map<ImplicitPoint, std::uint32_t, DefinitionHash, DefinitionEqual> ids_;
+  std::unordered_map<PointDefinition, std::uint32_t, DefinitionHash> ids_;
 };
 
 class AtomTrimmer {
@@ -286,6 +275,7 @@ class AtomTrimmer {
   // The face being trimmed.
   std::array<Vec3, 3> f_;
   std::array<Index, 3> f_index_{};
+  std::uint32_t face_ = 0;
   BoundingBox f_box_;
   FaceWork work_;
   std::size_t crossings_ = 0;
@@ -402,30 +392,32 @@ bool AtomTrimmer::trace(std::uint32_t ni, std::uint32_t g) {
   };
   for (std::uint8_t k = 0; k < 3; ++k) {
     if (sf[k] == 0 && in_cone(n.centre, t, f_[k]))
-      note(work_.add(ImplicitPoint::explicit_point(f_[k]), {Where::corner, k}, ni));
+      note(work_.add(PointDefinition::vertex(atom_, f_index_[k]), polyhedra_, {Where::corner, k}, ni));
     const int k1 = (k + 1) % 3;
     if (sf[k] * sf[k1] < 0) {
-      // Canonical edge direction (lower vertex first): the same definition from both faces.
+      // Canonical edge direction (lower vertex first), as the point's definition has it.
       const bool forward = f_index_[k] < f_index_[k1];
       const Vec3 &p = forward ? f_[k] : f_[k1], &q = forward ? f_[k1] : f_[k];
       if (!line_meets_triangle(p, q, t)) continue;
-      note(work_.add(ImplicitPoint::line_plane(p, q, t[0], t[1], t[2]), {Where::edge, k}, ni));
+      note(work_.add(PointDefinition::edge_plane(atom_, f_index_[k], f_index_[k1], n.atom, g), polyhedra_,
+                     {Where::edge, k}, ni));
     }
   }
+  const Triangle& tri = n.shape->unit.faces[g];
   for (int m = 0; m < 3; ++m) {
     std::array<int, 3> side;
     if (sg[m] == 0) {
       for (int k = 0; k < 3; ++k) side[k] = geometry::orient3d(centre_, f_[k], f_[(k + 1) % 3], t[m]);
       if (side[0] >= 0 && side[1] >= 0 && side[2] >= 0)
-        note(work_.add(ImplicitPoint::explicit_point(t[m]), place_from_sides(side), ni));
+        note(work_.add(PointDefinition::vertex(n.atom, tri[m]), polyhedra_, place_from_sides(side), ni));
     }
     const int m1 = (m + 1) % 3;
     if (sg[m] * sg[m1] < 0) {
-      const Triangle& tri = n.shape->unit.faces[g];
       const bool forward = tri[m] < tri[m1];
       const Vec3 &p = forward ? t[m] : t[m1], &q = forward ? t[m1] : t[m];
       if (!line_meets_triangle(p, q, f_, &side)) continue;
-      note(work_.add(ImplicitPoint::line_plane(p, q, f_[0], f_[1], f_[2]), place_from_sides(side), ni));
+      note(work_.add(PointDefinition::edge_plane(n.atom, tri[m], tri[m1], atom_, face_), polyhedra_,
+                     place_from_sides(side), ni));
     }
   }
   if (count == 0) return false;
@@ -462,17 +454,11 @@ void AtomTrimmer::add_crossings() {
       const int o3 = geometry::orient3d(pb[0], pb[1], pb[2], work_.points[sa.s]);
       const int o4 = geometry::orient3d(pb[0], pb[1], pb[2], work_.points[sa.t]);
       if (o3 * o4 >= 0) continue;
-      // Planes in a canonical order, so every face that meets the point defines it alike.
-      std::array<std::array<Vec3, 3>, 3> planes{f_, pa, pb};
-      std::sort(planes.begin(), planes.end(), [](const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y) {
-        return std::memcmp(x.data(), y.data(), sizeof x) < 0;
-      });
-      const ImplicitPoint x = ImplicitPoint::three_planes({planes[0][0], planes[0][1], planes[0][2], planes[1][0],
-                                                           planes[1][1], planes[1][2], planes[2][0], planes[2][1],
-                                                           planes[2][2]});
+      const PointDefinition x = PointDefinition::three_planes(
+          {{{atom_, face_}, {nbr_[sa.neighbour].atom, sa.plane}, {nbr_[sb.neighbour].atom, sb.plane}}});
       // On both neighbours' boundaries: added under each (the second call finds the first).
-      work_.add(x, {boolean_engine::Where::interior, 0}, sa.neighbour);
-      const std::uint32_t id = work_.add(x, {boolean_engine::Where::interior, 0}, sb.neighbour);
+      work_.add(x, polyhedra_, {boolean_engine::Where::interior, 0}, sa.neighbour);
+      const std::uint32_t id = work_.add(x, polyhedra_, {boolean_engine::Where::interior, 0}, sb.neighbour);
       work_.segments[a].crossings.push_back(id);
       work_.segments[b].crossings.push_back(id);
       ++crossings_;
@@ -489,11 +475,11 @@ void AtomTrimmer::emit(const std::array<std::uint32_t, 3>& local, AtomPieces& ou
       std::uint32_t& id = corner_id_[f_index_[place.index]];
       if (id == ~0u) {
         id = static_cast<std::uint32_t>(out.points.size());
-        out.points.push_back(ImplicitPoint::explicit_point(f_[place.index]));
+        out.points.push_back(PointDefinition::vertex(atom_, f_index_[place.index]));
       }
       tri[k] = id;
     } else {
-      tri[k] = table.add(work_.points[local[k]], out.points);
+      tri[k] = table.add(work_.definitions[local[k]], out.points);
     }
   }
   out.triangles.push_back(tri);
@@ -506,7 +492,7 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
   face.projection = boolean_engine::face_projection(f_[0], f_[1], f_[2]);
   std::array<std::uint32_t, 3> corner;
   for (std::uint8_t k = 0; k < 3; ++k)
-    corner[k] = w.add(ImplicitPoint::explicit_point(f_[k]), {Where::corner, k}, ~0u);
+    corner[k] = w.add(PointDefinition::vertex(atom_, f_index_[k]), polyhedra_, {Where::corner, k}, ~0u);
   auto& edge_run = w.edge_run;
   for (int k = 0; k < 3; ++k) {
     auto& inside = w.scratch;
@@ -633,6 +619,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   corner_id_.assign(vertices_.size(), ~0u);
   for (std::uint32_t f = 0; f < shape.unit.faces.size(); ++f) {
     const Triangle& tri = shape.unit.faces[f];
+    face_ = f;
     for (int k = 0; k < 3; ++k) {
       f_index_[k] = tri[k];
       f_[k] = vertices_[tri[k]];
@@ -701,7 +688,8 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       ++out.faces_whole;
       std::array<std::uint32_t, 3> local;
       for (std::uint8_t k = 0; k < 3; ++k)
-        local[k] = work_.add(ImplicitPoint::explicit_point(f_[k]), {boolean_engine::Where::corner, k}, ~0u);
+        local[k] = work_.add(PointDefinition::vertex(atom_, f_index_[k]), polyhedra_, {boolean_engine::Where::corner, k},
+                             ~0u);
       emit(local, out, table);
       continue;
     }
@@ -713,7 +701,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   out.hashes.resize(out.points.size(), 0);
   for (std::size_t k = 0; k < out.points.size(); ++k)
     if (!out.points[k].is_explicit()) {
-      out.hashes[k] = DefinitionHash{}(out.points[k]);
+      out.hashes[k] = out.points[k].hash();
       ++out.implicit_points;
     }
   return out;
@@ -788,7 +776,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     std::uint32_t position;
     bool operator<(const HashedPosition& o) const { return hash != o.hash ? hash < o.hash : position < o.position; }
   };
-  std::vector<const ImplicitPoint*> sequence(point_start.back());
+  std::vector<const PointDefinition*> sequence(point_start.back());
   std::vector<std::uint32_t> representative(sequence.size());
   std::vector<HashedPosition> hashed(implicit_start.back());
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
@@ -810,20 +798,20 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   for (std::int64_t k = 0; k < hashed_count; ++k) {
     std::int64_t first = k;
     while (first > 0 && hashed[first - 1].hash == hashed[k].hash) --first;
-    const ImplicitPoint& point = *sequence[hashed[k].position];
+    const PointDefinition& point = *sequence[hashed[k].position];
     for (std::int64_t j = first; j < k; ++j)
-      if (same_definition(*sequence[hashed[j].position], point)) {
+      if (*sequence[hashed[j].position] == point) {
         representative[hashed[k].position] = hashed[j].position;
         break;
       }
   }
   hashed = {};
-  std::vector<const ImplicitPoint*> points;
+  std::vector<PointDefinition> points;
   std::vector<std::uint32_t> point_of(sequence.size());
   for (std::size_t s = 0; s < sequence.size(); ++s) {
     if (representative[s] == s) {
       point_of[s] = static_cast<std::uint32_t>(points.size());
-      points.push_back(sequence[s]);
+      points.push_back(*sequence[s]);
     } else {
       point_of[s] = point_of[representative[s]];
     }
@@ -842,19 +830,37 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     }
   }
   point_of = {};
+  pieces = {};
 
+  // Each point's filter box and output coordinates, from its definition; the implicit
+  // points themselves are rebuilt only where two boxes overlap.
+  const auto point_count = static_cast<std::int64_t>(points.size());
+  std::vector<std::array<geometry::Interval, 3>> boxes(points.size());
+  std::vector<Vec3> coordinates(points.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t p = 0; p < point_count; ++p) {
+    const ImplicitPoint x = construct(points[p], polyhedra);
+    boxes[p] = {x.coordinate(0), x.coordinate(1), x.coordinate(2)};
+    coordinates[p] = output_coordinates(x);
+  }
+  auto boxes_overlap = [&](std::uint32_t a, std::uint32_t b) {
+    for (int axis = 0; axis < 3; ++axis)
+      if (boxes[a][axis].hi < boxes[b][axis].lo || boxes[b][axis].hi < boxes[a][axis].lo) return false;
+    return true;
+  };
   std::vector<std::pair<double, std::uint32_t>> order(points.size());
   std::vector<std::uint32_t> same(points.size());
-  const auto point_count = static_cast<std::int64_t>(points.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::int64_t p = 0; p < point_count; ++p) order[p] = {points[p]->coordinate(0).lo, static_cast<std::uint32_t>(p)};
+  for (std::int64_t p = 0; p < point_count; ++p) order[p] = {boxes[p][0].lo, static_cast<std::uint32_t>(p)};
   std::iota(same.begin(), same.end(), 0u);
   __gnu_parallel::sort(order.begin(), order.end());  // a total order: the same for any thread count
   for (std::size_t k = 0; k < order.size(); ++k) {
-    const ImplicitPoint& a = *points[order[k].second];
-    for (std::size_t l = k + 1; l < order.size() && order[l].first <= a.coordinate(0).hi; ++l) {
-      const std::uint32_t x = std::min(order[k].second, order[l].second), y = std::max(order[k].second, order[l].second);
-      if (same[y] != y || !geometry::same_point(a, *points[order[l].second])) continue;
+    const std::uint32_t a = order[k].second;
+    for (std::size_t l = k + 1; l < order.size() && order[l].first <= boxes[a][0].hi; ++l) {
+      const std::uint32_t b = order[l].second, x = std::min(a, b), y = std::max(a, b);
+      if (same[y] != y || !boxes_overlap(a, b) ||
+          !geometry::same_point(construct(points[a], polyhedra), construct(points[b], polyhedra)))
+        continue;
       std::uint32_t root = x;
       while (same[root] != root) root = same[root];
       same[y] = root;
@@ -870,7 +876,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   mesh.vertices.resize(vertex_count);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t p = 0; p < point_count; ++p)
-    if (same[p] == static_cast<std::uint32_t>(p)) mesh.vertices[vertex_of[p]] = output_coordinates(*points[p]);
+    if (same[p] == static_cast<std::uint32_t>(p)) mesh.vertices[vertex_of[p]] = coordinates[p];
   const auto face_count = static_cast<std::int64_t>(mesh.faces.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t f = 0; f < face_count; ++f)
@@ -882,7 +888,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   {
     std::vector<std::uint8_t> rounded(mesh.vertices.size(), 0), operand(mesh.faces.size(), 0);
     for (std::uint32_t p = 0; p < points.size(); ++p)
-      if (!points[p]->is_explicit()) rounded[vertex_of[p]] = 1;
+      if (!points[p].is_explicit()) rounded[vertex_of[p]] = 1;
     std::vector<std::uint32_t> atom_of(mesh.face_tags.begin(), mesh.face_tags.end());
     boolean_engine::repair_rounding(mesh, operand, atom_of, rounded, {});
     mesh.face_tags.assign(atom_of.begin(), atom_of.end());
