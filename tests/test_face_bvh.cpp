@@ -54,6 +54,20 @@ TEST(BoxBvh, PairsEqualBruteForce) {
   }
 }
 
+TEST(BoxBvh, LeafPairsVisitEveryOverlappingPairOnce) {
+  for (const std::size_t n : {0u, 1u, 4u, 5u, 17u, 500u, 3000u}) {
+    const auto boxes = random_boxes(n, static_cast<unsigned>(n) + 11);
+    const BoxBvh bvh(boxes);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
+    for (std::size_t leaf = 0; leaf < bvh.leaf_count(); ++leaf)
+      bvh.for_each_pair_at_leaf(leaf, [&](std::uint32_t i, std::uint32_t j) {
+        found.emplace_back(std::min(i, j), std::max(i, j));
+      });
+    std::sort(found.begin(), found.end());  // a pair seen twice stays twice
+    EXPECT_EQ(found, brute_force_pairs(boxes)) << n << " boxes";
+  }
+}
+
 TEST(BoxBvh, QueryEqualsBruteForce) {
   const auto boxes = random_boxes(2000, 99);
   const BoxBvh bvh(boxes);

@@ -172,6 +172,9 @@ void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t
       item_bounds_.set(static_cast<std::size_t>(k), boxes[items[k].id]);
     }
   }
+  for (std::uint32_t node = 0; node < node_count_; ++node)
+    if (count_[node] > 0) leaves_.push_back(node);
+  std::sort(leaves_.begin(), leaves_.end(), [&](std::uint32_t a, std::uint32_t b) { return first_[a] < first_[b]; });
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> BoxBvh::overlapping_pairs() const {

@@ -267,18 +267,15 @@ void check_self_intersections(const Mesh& mesh, const std::vector<std::uint8_t>&
 
   std::size_t intersecting = 0, contacts = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
-  const std::span<const std::uint32_t> order = bvh.leaf_order();  // the testable faces
-  const auto count = static_cast<std::int64_t>(order.size());
+  const auto count = static_cast<std::int64_t>(bvh.leaf_count());
   ParallelExceptions errors;
 #pragma omp parallel reduction(+ : intersecting, contacts)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
-#pragma omp for schedule(dynamic, 4096)
+#pragma omp for schedule(dynamic, 1024)
     for (std::int64_t k = 0; k < count; ++k)
       errors.run(k, [&] {
-        const std::size_t face_i = order[k];
-        bvh.for_each_overlap(geometry::face_box(mesh, face_i), [&](std::uint32_t j) {
-          if (j <= face_i) return;  // each unordered pair once
+        bvh.for_each_pair_at_leaf(static_cast<std::size_t>(k), [&](std::uint32_t face_i, std::uint32_t j) {
           switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
             case geometry::TrianglePairRelation::intersecting:
               ++intersecting;
