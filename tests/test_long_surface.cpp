@@ -1,7 +1,9 @@
 // Every structure in data/pdb at densities 1, 2, 4 and probes 0 and 1.4 (label `long`):
-// the surface must be valid (closed, 2-manifold, outward, no self-intersection).
+// the surface must be valid (closed, 2-manifold, outward, no self-intersection), and the
+// same to the byte on 1 and 2 threads.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 #include <tuple>
 
@@ -9,6 +11,7 @@
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
+#include "common/thread_count_scope.hpp"
 
 namespace molsurf {
 namespace {
@@ -31,6 +34,31 @@ TEST_P(Structures, ValidSurface) {
   EXPECT_GT(c.volume, 0);
 }
 
+class ThreadCount : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ThreadCount, ChangesNoByte) {
+  const auto& [file, density, probe] = GetParam();
+  const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/" + file);
+  std::array<Mesh, 2> raw, cleaned;
+  for (int threads : {1, 2}) {
+    SurfaceOptions o;
+    o.spheres.density = density;
+    o.spheres.probe = probe;
+    o.threads = threads;
+    SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+    raw[threads - 1] = r.mesh;
+    const ThreadCountScope scope(threads);
+    improve_surface(r.mesh);
+    cleaned[threads - 1] = std::move(r.mesh);
+  }
+  EXPECT_TRUE(raw[0].vertices == raw[1].vertices && raw[0].faces == raw[1].faces &&
+              raw[0].face_tags == raw[1].face_tags)
+      << "the union";
+  EXPECT_TRUE(cleaned[0].vertices == cleaned[1].vertices && cleaned[0].faces == cleaned[1].faces &&
+              cleaned[0].face_tags == cleaned[1].face_tags)
+      << "the cleaned surface";
+}
+
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
   std::string name = std::get<0>(info.param) + "_d" + std::to_string(static_cast<int>(std::get<1>(info.param))) +
                      "_p" + (std::get<2>(info.param) > 0 ? "14" : "0");
@@ -46,6 +74,16 @@ INSTANTIATE_TEST_SUITE_P(Corpus, Structures,
                                                               "1f2n_assembly1.cif.gz"),
                                             ::testing::Values(1.0, 2.0, 4.0), ::testing::Values(0.0, 1.4)),
                          case_name);
+
+// The capsid at its default density and probe only: its other cases cost hours on 2 cores.
+INSTANTIATE_TEST_SUITE_P(Corpus, ThreadCount,
+                         ::testing::Combine(::testing::Values("1crn.pdb", "1ubq.pdb", "1j8k.cif", "3pqr.cif",
+                                                              "2hhb.pdb", "4hhb.cif", "7cth.cif", "4yvs.cif",
+                                                              "2btv.pdb"),
+                                            ::testing::Values(1.0, 2.0, 4.0), ::testing::Values(0.0, 1.4)),
+                         case_name);
+INSTANTIATE_TEST_SUITE_P(Capsid, ThreadCount,
+                         ::testing::Values(Case{"1f2n_assembly1.cif.gz", 2.0, 1.4}), case_name);
 
 }  // namespace
 }  // namespace molsurf
