@@ -223,10 +223,23 @@ Place place_from_sides(const std::array<int, 3>& side) {
   throw std::logic_error("one-pass union: a point on all three edges of a face");
 }
 
+// The double coordinates written out: the filter box's midpoint when the box is a few
+// ulps wide (within about an ulp of the exact value), the exact value truncated otherwise.
+Vec3 output_coordinates(const ImplicitPoint& p) {
+  if (p.is_explicit()) return p.explicit_value();
+  Vec3 mid{p.coordinate(0).mid(), p.coordinate(1).mid(), p.coordinate(2).mid()};
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& i = p.coordinate(axis);
+    if (!(i.hi - i.lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(i.lo), std::fabs(i.hi))))
+      return p.rounded();
+  }
+  return mid;
+}
+
 // The output of one atom: its kept pieces, with points merged by exact value.
 struct AtomPieces {
   std::vector<PointDefinition> points;
-  std::vector<std::uint64_t> hashes;  // of the points' definitions (implicit points only)
+  std::vector<Vec3> coordinates;  // of points, as written
   std::size_t implicit_points = 0;
   std::vector<Triangle> triangles;
   std::size_t faces_inside = 0, faces_whole = 0, faces_cut = 0, crossings = 0;
@@ -234,9 +247,12 @@ struct AtomPieces {
 
 class PointTable {
  public:
-  std::uint32_t add(const PointDefinition& d, std::vector<PointDefinition>& points) {
-    auto [it, inserted] = ids_.try_emplace(d, static_cast<std::uint32_t>(points.size()));
-    if (inserted) points.push_back(d);
+  std::uint32_t add(const PointDefinition& d, const ImplicitPoint& x, AtomPieces& out) {
+    auto [it, inserted] = ids_.try_emplace(d, static_cast<std::uint32_t>(out.points.size()));
+    if (inserted) {
+      out.points.push_back(d);
+      out.coordinates.push_back(output_coordinates(x));
+    }
     return it->second;
   }
 
@@ -476,10 +492,11 @@ void AtomTrimmer::emit(const std::array<std::uint32_t, 3>& local, AtomPieces& ou
       if (id == ~0u) {
         id = static_cast<std::uint32_t>(out.points.size());
         out.points.push_back(PointDefinition::vertex(atom_, f_index_[place.index]));
+        out.coordinates.push_back(f_[place.index]);
       }
       tri[k] = id;
     } else {
-      tri[k] = table.add(work_.definitions[local[k]], out.points);
+      tri[k] = table.add(work_.definitions[local[k]], work_.points[local[k]], out);
     }
   }
   out.triangles.push_back(tri);
@@ -698,26 +715,8 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
     split_and_classify(out, table);
   }
   out.crossings = crossings_;
-  out.hashes.resize(out.points.size(), 0);
-  for (std::size_t k = 0; k < out.points.size(); ++k)
-    if (!out.points[k].is_explicit()) {
-      out.hashes[k] = out.points[k].hash();
-      ++out.implicit_points;
-    }
+  for (const PointDefinition& d : out.points) out.implicit_points += !d.is_explicit();
   return out;
-}
-
-// The double coordinates written out: the filter box's midpoint when the box is a few
-// ulps wide (within about an ulp of the exact value), the exact value truncated otherwise.
-Vec3 output_coordinates(const ImplicitPoint& p) {
-  if (p.is_explicit()) return p.explicit_value();
-  Vec3 mid{p.coordinate(0).mid(), p.coordinate(1).mid(), p.coordinate(2).mid()};
-  for (int axis = 0; axis < 3; ++axis) {
-    const auto& i = p.coordinate(axis);
-    if (!(i.hi - i.lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(i.lo), std::fabs(i.hi))))
-      return p.rounded();
-  }
-  return mid;
 }
 
 }  // namespace
@@ -789,7 +788,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
       representative[position] = position;
       // An atom's own corners are points of no other atom, unless two atoms have a vertex
       // in common, which the merge by exact value below finds.
-      if (!p.points[k].is_explicit()) hashed[next_implicit++] = {p.hashes[k], position};
+      if (!p.points[k].is_explicit()) hashed[next_implicit++] = {p.points[k].hash(), position};
     }
   }
   __gnu_parallel::sort(hashed.begin(), hashed.end());
@@ -806,18 +805,21 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
       }
   }
   hashed = {};
-  std::vector<PointDefinition> points;
-  std::vector<std::uint32_t> point_of(sequence.size());
-  for (std::size_t s = 0; s < sequence.size(); ++s) {
-    if (representative[s] == s) {
-      point_of[s] = static_cast<std::uint32_t>(points.size());
-      points.push_back(*sequence[s]);
-    } else {
-      point_of[s] = point_of[representative[s]];
-    }
-  }
-  representative = {};
   sequence = {};
+  std::vector<PointDefinition> points;
+  std::vector<Vec3> coordinates;
+  std::vector<std::uint32_t> point_of(representative.size());
+  for (std::size_t i = 0, s = 0; i < pieces.size(); ++i)
+    for (std::size_t k = 0; k < pieces[i].points.size(); ++k, ++s) {
+      if (representative[s] == s) {
+        point_of[s] = static_cast<std::uint32_t>(points.size());
+        points.push_back(pieces[i].points[k]);
+        coordinates.push_back(pieces[i].coordinates[k]);
+      } else {
+        point_of[s] = point_of[representative[s]];
+      }
+    }
+  representative = {};
   mesh.faces.resize(face_start.back());
   mesh.face_tags.resize(face_start.back());
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
@@ -832,33 +834,36 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   point_of = {};
   pieces = {};
 
-  // Each point's filter box and output coordinates, from its definition; the implicit
-  // points themselves are rebuilt only where two boxes overlap.
+  // A written coordinate is within about 2 ulps of the exact one (the filter box's
+  // midpoint when the box is that tight, the exact value truncated otherwise), so points
+  // equal by exact value have written coordinates within these windows of each other; the
+  // implicit points are rebuilt and compared exactly only there.
   const auto point_count = static_cast<std::int64_t>(points.size());
-  std::vector<std::array<geometry::Interval, 3>> boxes(points.size());
-  std::vector<Vec3> coordinates(points.size());
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::int64_t p = 0; p < point_count; ++p) {
-    const ImplicitPoint x = construct(points[p], polyhedra);
-    boxes[p] = {x.coordinate(0), x.coordinate(1), x.coordinate(2)};
-    coordinates[p] = output_coordinates(x);
-  }
-  auto boxes_overlap = [&](std::uint32_t a, std::uint32_t b) {
-    for (int axis = 0; axis < 3; ++axis)
-      if (boxes[a][axis].hi < boxes[b][axis].lo || boxes[b][axis].hi < boxes[a][axis].lo) return false;
+  auto reach = [](double c) {
+    return 8 * std::numeric_limits<double>::epsilon() * std::fabs(c) + 8 * std::numeric_limits<double>::denorm_min();
+  };
+  auto windows_overlap = [&](std::uint32_t a, std::uint32_t b) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const double x = coordinates[a][axis], y = coordinates[b][axis];
+      if (x + reach(x) < y - reach(y) || y + reach(y) < x - reach(x)) return false;
+    }
     return true;
   };
   std::vector<std::pair<double, std::uint32_t>> order(points.size());
   std::vector<std::uint32_t> same(points.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::int64_t p = 0; p < point_count; ++p) order[p] = {boxes[p][0].lo, static_cast<std::uint32_t>(p)};
+  for (std::int64_t p = 0; p < point_count; ++p) {
+    const double x = coordinates[p].x;
+    order[p] = {x - reach(x), static_cast<std::uint32_t>(p)};
+  }
   std::iota(same.begin(), same.end(), 0u);
   __gnu_parallel::sort(order.begin(), order.end());  // a total order: the same for any thread count
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::uint32_t a = order[k].second;
-    for (std::size_t l = k + 1; l < order.size() && order[l].first <= boxes[a][0].hi; ++l) {
+    const double end = coordinates[a].x + reach(coordinates[a].x);
+    for (std::size_t l = k + 1; l < order.size() && order[l].first <= end; ++l) {
       const std::uint32_t b = order[l].second, x = std::min(a, b), y = std::max(a, b);
-      if (same[y] != y || !boxes_overlap(a, b) ||
+      if (same[y] != y || !windows_overlap(a, b) ||
           !geometry::same_point(construct(points[a], polyhedra), construct(points[b], polyhedra)))
         continue;
       std::uint32_t root = x;
@@ -893,19 +898,27 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     boolean_engine::repair_rounding(mesh, operand, atom_of, rounded, {});
     mesh.face_tags.assign(atom_of.begin(), atom_of.end());
   }
-  // Closed: every directed edge has its reverse.
-  std::vector<std::uint64_t> directed;
-  directed.reserve(mesh.faces.size() * 3);
+  // Closed: every directed edge (u, v) has its reverse, found among the few edges that
+  // leave v (edges bucketed by their first vertex).
+  std::vector<std::uint32_t> first(mesh.vertices.size() + 1, 0);
   for (const Triangle& t : mesh.faces)
-    for (int k = 0; k < 3; ++k) directed.push_back(std::uint64_t(t[k]) << 32 | t[(k + 1) % 3]);
-  __gnu_parallel::sort(directed.begin(), directed.end());
-  std::size_t open_edges = 0;
-  const auto directed_count = static_cast<std::int64_t>(directed.size());
-#pragma omp parallel for schedule(static) reduction(+ : open_edges) num_threads(threads)
-  for (std::int64_t k = 0; k < directed_count; ++k) {
-    const std::uint64_t e = directed[k], reverse = (e << 32) | (e >> 32);
-    if (!std::binary_search(directed.begin(), directed.end(), reverse)) ++open_edges;
+    for (const Index v : t) ++first[v + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<Index> to(first.back());
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (const Triangle& t : mesh.faces)
+      for (int k = 0; k < 3; ++k) to[fill[t[k]]++] = t[(k + 1) % 3];
   }
+  std::size_t open_edges = 0;
+  const auto vertex_total = static_cast<std::int64_t>(mesh.vertices.size());
+#pragma omp parallel for schedule(static) reduction(+ : open_edges) num_threads(threads)
+  for (std::int64_t u = 0; u < vertex_total; ++u)
+    for (std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
+      const Index v = to[k];
+      if (std::find(to.begin() + first[v], to.begin() + first[v + 1], static_cast<Index>(u)) == to.begin() + first[v + 1])
+        ++open_edges;
+    }
   result.stats.open_edges = open_edges;
   result.stats.seconds_join = seconds_since(start);
   result.stats.atoms = atoms.size();
