@@ -282,6 +282,22 @@ TEST(MeshCheck, CavityIsValid) {
   expect_consistent(c);
 }
 
+// The nesting ray starts at a vertex of the cavity; this cavity's first vertex lies on
+// the outer wall (a contact), which says nothing about inside or outside, so another of
+// its vertices decides.
+TEST(MeshCheck, CavityTouchingTheWallAtAVertexIsValid) {
+  Mesh cavity;
+  cavity.vertices = {{-2, 0, 0}, {-1, 1, 0}, {-1, 0, 1}, {-1, -1, -1}};
+  cavity.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+  if (signed_volume(cavity) > 0) cavity = flipped(cavity);
+  const MeshCheck c = check_mesh(joined(cube({-2, -2, -2}, 5), cavity));
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_EQ(c.inward_components, 0u);
+  EXPECT_TRUE(c.valid()) << ::testing::PrintToString(c.defects());
+  // Turned outward, the same shell is an inward component.
+  EXPECT_EQ(check_mesh(joined(cube({-2, -2, -2}, 5), flipped(cavity))).inward_components, 1u);
+}
+
 // Far from the origin, a tiny cavity's volume summed about the origin is all rounding
 // (terms of 1e9 for a volume of 1e-13): its sign must still come out right, exactly.
 TEST(MeshCheck, TinyCavityFarFromTheOriginIsValid) {

@@ -30,20 +30,30 @@ int sign_of(const T& v) {
   return v > 0 ? 1 : (v < 0 ? -1 : 0);
 }
 
-// Does the perturbed ray from x cross triangle abc? Coordinates of type T (double with
-// exact predicates, or mpq_class).
-bool crosses(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
+}  // namespace
+
+RayMeets ray_meets(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
   const int nx = orient2d(a.y, a.z, b.y, b.z, c.y, c.z);
-  if (nx == 0) return false;  // parallel to the ray: the perturbed ray misses it
+  if (nx == 0) return RayMeets::misses;  // parallel to the ray: the perturbed ray misses it
   const Vec3* corner[3] = {&a, &b, &c};
   for (int i = 0; i < 3; ++i) {
     const Vec3 &p = *corner[i], &q = *corner[(i + 1) % 3];
     const int d0 = orient2d(p.y, p.z, q.y, q.z, x.y, x.z);
-    if (perturbed_side(d0, p.y, p.z, q.y, q.z) != nx) return false;
+    if (perturbed_side(d0, p.y, p.z, q.y, q.z) != nx) return RayMeets::misses;
   }
   const int o = orient3d(a, b, c, x);
-  if (o == 0) throw std::logic_error("boolean: ray origin lies on a face of the other solid");
-  return o != nx;
+  if (o == 0) return RayMeets::origin_on_face;
+  return o != nx ? RayMeets::crosses : RayMeets::misses;
+}
+
+namespace {
+
+// Does the perturbed ray from x cross triangle abc? Exact, on doubles or on a rational
+// point (the slow path).
+bool crosses(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
+  const RayMeets meets = ray_meets(a, b, c, x);
+  if (meets == RayMeets::origin_on_face) throw std::logic_error("boolean: ray origin lies on a face of the other solid");
+  return meets == RayMeets::crosses;
 }
 
 bool crosses(const Vec3& a, const Vec3& b, const Vec3& c, const ExactPoint& x) {

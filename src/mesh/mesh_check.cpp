@@ -32,7 +32,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <cstdint>
 #include <numeric>
@@ -259,11 +258,9 @@ std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8
   return duplicates;
 }
 
-void check_self_intersections(const Mesh& mesh, const std::vector<std::uint8_t>& degenerate,
-                              std::size_t max_examples, MeshCheck& result) {
-  std::vector<std::uint8_t> testable(degenerate.size());
-  for (std::size_t f = 0; f < degenerate.size(); ++f) testable[f] = !degenerate[f];
-  const geometry::BoxBvh bvh = geometry::BoxBvh::for_faces(mesh, testable);
+// `bvh` holds the faces that are not degenerate.
+void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std::size_t max_examples,
+                              MeshCheck& result) {
 
   std::size_t intersecting = 0, contacts = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
@@ -313,7 +310,8 @@ bool box_contains(const BoundingBox& outer, const BoundingBox& inner) {
          inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
 }
 
-void check_components(const Mesh& mesh, MeshCheck& result) {
+// `tree` holds the faces that are not degenerate (a degenerate face meets no ray).
+void check_components(const Mesh& mesh, const geometry::BoxBvh& tree, MeshCheck& result) {
   const Components components = connected_components(mesh);
   result.components = components.count;
   std::vector<BoundingBox> box(components.count);
@@ -340,32 +338,44 @@ void check_components(const Mesh& mesh, MeshCheck& result) {
     return;
   }
   // Nesting depth by exact ray parity: a component inside an odd number of others is a
-  // cavity and must face inward (negative volume); otherwise it must face outward.
-  std::vector<std::unique_ptr<Mesh>> solid(components.count);
-  std::vector<std::unique_ptr<geometry::RayParity>> rays(components.count);
-  auto ray_of = [&](std::size_t d) -> const geometry::RayParity& {
-    if (!rays[d]) {
-      solid[d] = std::make_unique<Mesh>();
-      solid[d]->vertices = mesh.vertices;
-      for (std::uint32_t f : faces_of[d]) solid[d]->faces.push_back(mesh.faces[f]);
-      rays[d] = std::make_unique<geometry::RayParity>(*solid[d]);
-    }
-    return *rays[d];
-  };
+  // cavity and must face inward (negative volume); otherwise it must face outward. One ray
+  // from a vertex of c, through the tree of all faces, counts the crossings of every
+  // component whose box holds c's. A vertex on another component's surface (a contact)
+  // tells nothing about that component, so the next vertex of c is tried for it.
+  const double max_x = bounding_box(mesh).max.x;
+  std::vector<std::uint8_t> pending(components.count, 0), parity(components.count), contact(components.count);
+  std::vector<std::uint32_t> around;
   for (std::size_t c = 0; c < components.count; ++c) {
+    around.clear();
+    for (std::uint32_t d = 0; d < components.count; ++d)
+      if (d != c && box_contains(box[d], box[c])) around.push_back(d);
     std::size_t depth = 0;
-    for (std::size_t d = 0; d < components.count; ++d) {
-      if (d == c || !box_contains(box[d], box[c])) continue;
-      // Any vertex of c not on d's surface decides (they cannot cross: that is checked
-      // apart); a vertex on d's surface (a contact) tells nothing, so try the next.
-      for (std::uint32_t f : faces_of[c]) {
-        try {
-          if (ray_of(d).inside(mesh.vertices[mesh.faces[f][0]])) ++depth;
-          break;
-        } catch (const std::logic_error&) {
+    for (const std::uint32_t d : around) pending[d] = 1;
+    std::size_t undecided = around.size();
+    for (std::size_t k = 0; k < faces_of[c].size() && undecided > 0; ++k) {
+      const Vec3& x = mesh.vertices[mesh.faces[faces_of[c][k]][0]];
+      for (const std::uint32_t d : around) parity[d] = contact[d] = 0;
+      BoundingBox ray;
+      ray.min = x;
+      ray.max = {std::max(max_x, x.x), x.y, x.z};
+      tree.for_each_overlap(ray, [&](std::uint32_t g) {
+        const std::uint32_t d = components.face_component[g];
+        if (!pending[d]) return;
+        const Triangle& t = mesh.faces[g];
+        switch (geometry::ray_meets(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], x)) {
+          case geometry::RayMeets::crosses: parity[d] ^= 1; break;
+          case geometry::RayMeets::origin_on_face: contact[d] = 1; break;
+          case geometry::RayMeets::misses: break;
         }
-      }
+      });
+      for (const std::uint32_t d : around)
+        if (pending[d] && !contact[d]) {
+          depth += parity[d];
+          pending[d] = 0;
+          --undecided;
+        }
     }
+    for (const std::uint32_t d : around) pending[d] = 0;
     const bool cavity = depth % 2 == 1;
     if (cavity ? volume[c] >= 0 : volume[c] <= 0) ++result.inward_components;
   }
@@ -468,8 +478,13 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
     result.area = result.volume = std::numeric_limits<double>::quiet_NaN();
     return result;
   }
-  if (options.self_intersections) check_self_intersections(mesh, degenerate, options.max_examples, result);
-  check_components(mesh, result);
+  {
+    std::vector<std::uint8_t> testable(nf);
+    for (std::size_t f = 0; f < nf; ++f) testable[f] = !degenerate[f];
+    const geometry::BoxBvh tree = geometry::BoxBvh::for_faces(mesh, testable);
+    if (options.self_intersections) check_self_intersections(mesh, tree, options.max_examples, result);
+    check_components(mesh, tree, result);
+  }
 
   result.area = surface_area(mesh);
   result.volume = signed_volume(mesh);
