@@ -243,13 +243,14 @@ void expect_atom_cell_data(vtkPolyData* polydata, const Mesh& mesh, const std::v
   vtkDataArray* normals = polydata->GetPointData()->GetNormals();
   ASSERT_NE(normals, nullptr);
   EXPECT_EQ(normals->GetNumberOfTuples(), static_cast<vtkIdType>(mesh.vertex_count()));
-  // Area-weighted normals of a sphere point away from its centre.
+  // Area-weighted normals of a sphere point away from its centre; written as float32.
+  EXPECT_EQ(normals->GetDataType(), VTK_FLOAT);
   const std::vector<Vec3> expected = vertex_normals(mesh);
   for (std::size_t v = 0; v < mesh.vertex_count(); v += 17) {
     const double* n = normals->GetTuple3(static_cast<vtkIdType>(v));
-    EXPECT_NEAR(n[0], expected[v].x, 1e-12);
-    EXPECT_NEAR(n[1], expected[v].y, 1e-12);
-    EXPECT_NEAR(n[2], expected[v].z, 1e-12);
+    EXPECT_EQ(n[0], static_cast<float>(expected[v].x));
+    EXPECT_EQ(n[1], static_cast<float>(expected[v].y));
+    EXPECT_EQ(n[2], static_cast<float>(expected[v].z));
     EXPECT_GT(dot(Vec3{n[0], n[1], n[2]}, mesh.vertices[v] - Vec3{1.1, -2.3, 0.7}), 0);
   }
 }
@@ -294,7 +295,7 @@ TEST_F(MeshIoTest, LegacyVtkCarriesAtomDataPerFace) {
   EXPECT_EQ(legacy_int_array(bytes, "residue_number", faces), residue_numbers);
   EXPECT_NE(bytes.find("\nresidue_name 1 " + std::to_string(faces) + " string\n"), std::string::npos);
   EXPECT_NE(bytes.find("\nchain 1 " + std::to_string(faces) + " string\n"), std::string::npos);
-  EXPECT_NE(bytes.find("\nNORMALS Normals double\n"), std::string::npos);
+  EXPECT_NE(bytes.find("\nNORMALS Normals float\n"), std::string::npos);
   EXPECT_EQ(read_mesh(dir_ / "atoms.vtk").face_tags, mesh.face_tags);
 }
 
