@@ -446,23 +446,34 @@ namespace molsurf::boolean_engine {
 
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
                                                                                 const FacePoints& points) {
+  PolylineWork work;
+  return triangulate_polylines(face, points, work);
+}
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
+                                                                                const FacePoints& points,
+                                                                                PolylineWork& work) {
   static const double kSliverCosine = std::cos(0.1 * 3.141592653589793 / 180);  // 0.1 degree
   const int n = static_cast<int>(points.ids().size());
   const int m = static_cast<int>(face.boundary.size());
   if (n > 64) return std::nullopt;
   // Local indices: the boundary points are 0 .. m-1 in order (FacePoints keeps the order).
-  std::vector<int> local_boundary(m);
+  auto& local_boundary = work.local_boundary;
+  local_boundary.resize(m);
   for (int k = 0; k < m; ++k) local_boundary[k] = points.local(face.boundary[k]);
-  std::vector<int> boundary_position(n, -1);
+  auto& boundary_position = work.boundary_position;
+  boundary_position.assign(n, -1);
   for (int k = 0; k < m; ++k) boundary_position[local_boundary[k]] = k;
 
   // Points known to be collinear (one edge of the face, one intersection segment): any
   // three of a set have orientation 0 without arithmetic (and the filter could never
   // certify that zero: it would go to the exact path).
-  std::vector<std::uint64_t> lines(n, 0);
+  auto& lines = work.lines;
+  lines.assign(n, 0);
   for (std::size_t k = 0; k < face.collinear_sets.size() && k < 64; ++k)
     for (std::uint32_t id : face.collinear_sets[k]) lines[points.local(id)] |= std::uint64_t{1} << k;
-  std::vector<std::int8_t> memo(static_cast<std::size_t>(n) * n * n, 2);
+  auto& memo = work.memo;
+  memo.assign(static_cast<std::size_t>(n) * n * n, 2);
   auto orient = [&](int a, int b, int c) {
     if (lines[a] & lines[b] & lines[c]) return 0;
     int sign = 1;
@@ -477,7 +488,9 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   // The graph of the boundary and the constraints. Around every point its neighbours in
   // counter-clockwise order; the pieces are its bounded faces, each walked with the piece
   // on the left: from u -> v the walk goes on to the neighbour of v just clockwise of u.
-  std::vector<std::vector<int>> around(n);
+  auto& around = work.around;
+  if (around.size() < static_cast<std::size_t>(n)) around.resize(n);
+  for (int v = 0; v < n; ++v) around[v].clear();
   for (int k = 0; k < m; ++k) {
     const int a = local_boundary[k], b = local_boundary[(k + 1) % m];
     around[a].push_back(b);
@@ -519,7 +532,8 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
     return -1;
   };
   // Half-edges walked, keyed by (from, position of `to` in around[from]).
-  std::vector<std::vector<std::uint8_t>> walked(n);
+  auto& walked = work.walked;
+  if (walked.size() < static_cast<std::size_t>(n)) walked.resize(n);
   for (int v = 0; v < n; ++v) walked[v].assign(around[v].size(), 0);
   auto mark = [&](int a, int b) {
     for (std::size_t k = 0; k < around[a].size(); ++k)
@@ -532,12 +546,16 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   };
   // The outside of the face is not a piece.
   for (int k = 0; k < m; ++k) mark(local_boundary[(k + 1) % m], local_boundary[k]);
-  std::vector<std::vector<int>> pieces;
-  std::vector<std::uint8_t> in_piece(n, 0);
+  auto& pieces = work.pieces;
+  std::size_t piece_count = 0;
+  auto& in_piece = work.in_piece;
+  in_piece.assign(n, 0);
   for (int a = 0; a < n; ++a)
     for (std::size_t k = 0; k < around[a].size(); ++k) {
       if (walked[a][k]) continue;
-      std::vector<int> piece{a};
+      if (pieces.size() <= piece_count) pieces.emplace_back();
+      std::vector<int>& piece = pieces[piece_count];
+      piece.assign(1, a);
       walked[a][k] = 1;
       int from = a, to = around[a][k];
       while (to != a) {
@@ -551,16 +569,17 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
       }
       if (clockwise_of(a, from) != around[a][k]) return std::nullopt;
       for (int v : piece) in_piece[v] = 0;
-      pieces.push_back(std::move(piece));
+      ++piece_count;
     }
   // A connected graph: V - E + F = 2 with the outside as one face (a loop of constraints
   // apart from the rest would bound a piece with a hole).
   std::size_t edges = 0;
-  for (const auto& ring : around) edges += ring.size();
+  for (int v = 0; v < n; ++v) edges += around[v].size();
   edges /= 2;
-  if (static_cast<std::size_t>(n) + pieces.size() + 1 != edges + 2) return std::nullopt;
+  if (static_cast<std::size_t>(n) + piece_count + 1 != edges + 2) return std::nullopt;
 
-  std::vector<std::array<double, 2>> at(n);
+  auto& at = work.at;
+  at.resize(n);
   for (int i = 0; i < n; ++i)
     at[i] = {points.point(i).coordinate(face.projection.u).mid(), points.point(i).coordinate(face.projection.v).mid()};
   auto smallest_angle_cosine = [&](int a, int b, int c) {
@@ -575,7 +594,8 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   };
   // Certainly outside the closed triangle pcq: its interval box misses the triangle's box
   // (saves the exact orientations of nearly collinear points along a straight cut).
-  std::vector<std::array<double, 4>> box(n);  // u lo, u hi, v lo, v hi
+  auto& box = work.box;  // u lo, u hi, v lo, v hi
+  box.resize(n);
   for (int i = 0; i < n; ++i) {
     const auto &iu = points.point(i).coordinate(face.projection.u), &iv = points.point(i).coordinate(face.projection.v);
     box[i] = {iu.lo, iu.hi, iv.lo, iv.hi};
@@ -602,15 +622,20 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   // within two steps is clipped. So is a reflex corner (its two neighbours decide it);
   // corners whose triangle holds a point are re-examined every round.
   enum : std::uint8_t { kStale, kEar, kNoEar, kReflex };
-  for (const std::vector<int>& poly : pieces) {
+  auto &prev = work.prev, &next = work.next;
+  auto& score = work.score;
+  auto& state = work.state;
+  for (std::size_t piece = 0; piece < piece_count; ++piece) {
+    const std::vector<int>& poly = pieces[piece];
     const int k = static_cast<int>(poly.size());
-    std::vector<int> prev(k), next(k);
+    prev.resize(k);
+    next.resize(k);
     for (int i = 0; i < k; ++i) {
       prev[i] = (i + k - 1) % k;
       next[i] = (i + 1) % k;
     }
-    std::vector<double> score(k, 2);
-    std::vector<std::uint8_t> state(k, kStale);
+    score.assign(k, 2);
+    state.assign(k, kStale);
     int head = 0, remaining = k;
     auto examine = [&](int i) {
       const int p = poly[prev[i]], c = poly[i], q = poly[next[i]];

@@ -176,6 +176,8 @@ struct FaceWork {
   std::vector<std::vector<std::uint32_t>> unique_crossings;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::int8_t> inside;
+  boolean_engine::FaceToSplit face;
+  boolean_engine::PolylineWork polylines;
 
   void clear() {
     points.clear();
@@ -505,7 +507,11 @@ void AtomTrimmer::emit(const std::array<std::uint32_t, 3>& local, AtomPieces& ou
 void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
   using boolean_engine::Where;
   auto& w = work_;
-  boolean_engine::FaceToSplit face;
+  boolean_engine::FaceToSplit& face = w.face;
+  face.boundary.clear();
+  face.interior.clear();
+  face.constraints.clear();
+  face.collinear_sets.clear();
   face.projection = boolean_engine::face_projection(f_[0], f_[1], f_[2]);
   std::array<std::uint32_t, 3> corner;
   for (std::uint8_t k = 0; k < 3; ++k)
@@ -593,7 +599,7 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
     if (face.constraints.empty() && face.interior.empty() && face.boundary.size() == 3) {
       triangles.push_back({corner[0], corner[1], corner[2]});
     } else {
-      auto clipped = boolean_engine::triangulate_polylines(face, points);
+      auto clipped = boolean_engine::triangulate_polylines(face, points, w.polylines);
       triangles = clipped ? std::move(*clipped) : boolean_engine::retriangulate_face(face, points);
     }
   }
