@@ -227,13 +227,15 @@ Place place_from_sides(const std::array<int, 3>& side) {
 
 // The double coordinates written out: the filter box's midpoint when the box is a few
 // ulps wide (within about an ulp of the exact value), the exact value truncated otherwise.
-Vec3 output_coordinates(const ImplicitPoint& p) {
+// Without the exact path: NaN when the box is wider (the exact rounding costs some 15 000
+// instructions; it is left to the join, once per distinct point).
+Vec3 output_coordinates_if_tight(const ImplicitPoint& p) {
   if (p.is_explicit()) return p.explicit_value();
   Vec3 mid{p.coordinate(0).mid(), p.coordinate(1).mid(), p.coordinate(2).mid()};
   for (int axis = 0; axis < 3; ++axis) {
     const auto& i = p.coordinate(axis);
     if (!(i.hi - i.lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(i.lo), std::fabs(i.hi))))
-      return p.rounded();
+      return Vec3{std::numeric_limits<double>::quiet_NaN(), 0, 0};
   }
   return mid;
 }
@@ -241,7 +243,7 @@ Vec3 output_coordinates(const ImplicitPoint& p) {
 // The output of one atom: its kept pieces, with points merged by exact value.
 struct AtomPieces {
   std::vector<PointDefinition> points;
-  std::vector<Vec3> coordinates;  // of points, as written
+  std::vector<Vec3> coordinates;  // of points, as written; NaN x: not yet known (output_coordinates_if_tight)
   std::size_t implicit_points = 0;
   std::vector<Triangle> triangles;
   std::size_t faces_inside = 0, faces_whole = 0, faces_cut = 0, crossings = 0;
@@ -253,7 +255,7 @@ class PointTable {
     auto [it, inserted] = ids_.try_emplace(d, static_cast<std::uint32_t>(out.points.size()));
     if (inserted) {
       out.points.push_back(d);
-      out.coordinates.push_back(output_coordinates(x));
+      out.coordinates.push_back(output_coordinates_if_tight(x));
     }
     return it->second;
   }
@@ -840,11 +842,14 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   point_of = {};
   pieces = {};
 
+  const auto point_count = static_cast<std::int64_t>(points.size());
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (std::int64_t p = 0; p < point_count; ++p)
+    if (std::isnan(coordinates[p].x)) coordinates[p] = construct(points[p], polyhedra).rounded();
   // A written coordinate is within about 2 ulps of the exact one (the filter box's
   // midpoint when the box is that tight, the exact value truncated otherwise), so points
   // equal by exact value have written coordinates within these windows of each other; the
   // implicit points are rebuilt and compared exactly only there.
-  const auto point_count = static_cast<std::int64_t>(points.size());
   auto reach = [](double c) {
     return 8 * std::numeric_limits<double>::epsilon() * std::fabs(c) + 8 * std::numeric_limits<double>::denorm_min();
   };
