@@ -98,6 +98,7 @@ struct BoxBvh::Builder {
   std::vector<BoundingBox>& node_boxes;
   std::vector<std::uint32_t>& first;
   std::vector<std::uint32_t>& count;
+  std::vector<std::uint32_t>& item_end;
 
   // Ranges smaller than this are built by the task that reached them.
   static constexpr std::uint32_t kTaskItems = 8192;
@@ -106,6 +107,7 @@ struct BoxBvh::Builder {
     if (end - begin <= kLeafSize) {
       first[node] = begin;
       count[node] = end - begin;
+      item_end[node] = end;
       BoundingBox box;
       for (std::uint32_t k = begin; k < end; ++k) box = union_of(box, boxes[items[k].id]);
       node_boxes[node] = box;
@@ -123,6 +125,7 @@ struct BoxBvh::Builder {
                      [axis](const SortItem& a, const SortItem& b) { return a.centre[axis] < b.centre[axis]; });
     first[node] = next;
     count[node] = 0;
+    item_end[node] = end;
     const std::uint32_t left_next = next + 2;
     const std::uint32_t right_next = left_next + subtree_nodes(mid - begin) - 1;
     if (end - begin >= kTaskItems) {
@@ -153,7 +156,8 @@ void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t
   std::vector<BoundingBox> node_boxes(node_count_);
   first_.assign(node_count_, 0);
   count_.assign(node_count_, 0);
-  Builder builder{boxes, items, node_boxes, first_, count_};
+  item_end_.assign(node_count_, 0);
+  Builder builder{boxes, items, node_boxes, first_, count_, item_end_};
 #pragma omp parallel
 #pragma omp single
   builder.build(0, 1, 0, static_cast<std::uint32_t>(ids.size()));

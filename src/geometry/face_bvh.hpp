@@ -84,13 +84,15 @@ class BoxBvh {
   // Inner node: first_ = left child (right child = first_ + 1), count_ = 0.
   // Leaf: items [first_, first_ + count_) of items_ / item_bounds_.
   std::vector<std::uint32_t> first_, count_;
+  std::vector<std::uint32_t> item_end_;  // per node: one past the last item position under it
   std::vector<std::uint32_t> items_;  // item ids in leaf order
   Bounds item_bounds_;                 // their boxes in the same order
   std::vector<std::uint32_t> leaves_;  // leaf nodes, in leaf order
 
-  // visit(position) for every item position (in leaf order) whose box overlaps `query`.
+  // visit(position) for every item position (in leaf order), from `from` on, whose box
+  // overlaps `query`; subtrees whose items all lie before `from` are not entered.
   template <class Visit>
-  void for_each_overlap_position(const BoundingBox& query, Visit&& visit) const;
+  void for_each_overlap_position(const BoundingBox& query, Visit&& visit, std::uint32_t from = 0) const;
 };
 
 template <class Visit>
@@ -104,19 +106,23 @@ void BoxBvh::for_each_pair_at_leaf(std::size_t leaf, Visit&& visit) const {
   BoundingBox box;
   box.min = {node_bounds_.min_x[node], node_bounds_.min_y[node], node_bounds_.min_z[node]};
   box.max = {node_bounds_.max_x[node], node_bounds_.max_y[node], node_bounds_.max_z[node]};
-  // Each pair once: from the leaf holding its earlier item, with the later one found.
-  for_each_overlap_position(box, [&](std::uint32_t k) {
-    for (std::uint32_t p = first; p < end && p < k; ++p) {
-      BoundingBox item;
-      item.min = {item_bounds_.min_x[p], item_bounds_.min_y[p], item_bounds_.min_z[p]};
-      item.max = {item_bounds_.max_x[p], item_bounds_.max_y[p], item_bounds_.max_z[p]};
-      if (item_bounds_.overlaps(k, item)) visit(items_[p], items_[k]);
-    }
-  });
+  // Each pair once: from the leaf holding its earlier item, with the later one found (so
+  // the subtrees wholly before this leaf are skipped).
+  for_each_overlap_position(
+      box,
+      [&](std::uint32_t k) {
+        for (std::uint32_t p = first; p < end && p < k; ++p) {
+          BoundingBox item;
+          item.min = {item_bounds_.min_x[p], item_bounds_.min_y[p], item_bounds_.min_z[p]};
+          item.max = {item_bounds_.max_x[p], item_bounds_.max_y[p], item_bounds_.max_z[p]};
+          if (item_bounds_.overlaps(k, item)) visit(items_[p], items_[k]);
+        }
+      },
+      first);
 }
 
 template <class Visit>
-void BoxBvh::for_each_overlap_position(const BoundingBox& query, Visit&& visit) const {
+void BoxBvh::for_each_overlap_position(const BoundingBox& query, Visit&& visit, std::uint32_t from) const {
   if (node_count_ == 0) return;
   // Median splits keep the depth at most about log2(n / kLeafSize) + 1, far below 128.
   std::uint32_t stack[128];
@@ -124,7 +130,7 @@ void BoxBvh::for_each_overlap_position(const BoundingBox& query, Visit&& visit) 
   stack[top++] = 0;
   while (top > 0) {
     const std::uint32_t node = stack[--top];
-    if (!node_bounds_.overlaps(node, query)) continue;
+    if (item_end_[node] <= from || !node_bounds_.overlaps(node, query)) continue;
     const std::uint32_t first = first_[node], count = count_[node];
     if (count == 0) {
       stack[top++] = first;
