@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <tuple>
@@ -12,43 +13,11 @@
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/topology.hpp"
+#include "surface/cleanup_face_grid.hpp"
 
 namespace molsurf {
 
 namespace {
-
-// Faces by the cells of a uniform grid their boxes touch: the exact intersection test
-// of changed faces needs every face near them, and faces move as the cleanup goes on.
-class FaceGrid {
- public:
-  FaceGrid(const Mesh& m, double cell) : m_(m), inverse_cell_(1.0 / cell) {}
-  void insert(std::uint32_t f) {
-    for_cells(bounding_box(m_, f), [&](std::uint64_t key) { cells_[key].push_back(f); });
-  }
-  void erase(std::uint32_t f) {
-    for_cells(bounding_box(m_, f), [&](std::uint64_t key) { std::erase(cells_[key], f); });
-  }
-  template <class Visit>
-  void near(const BoundingBox& box, Visit&& visit) const {
-    for_cells(box, [&](std::uint64_t key) {
-      if (auto it = cells_.find(key); it != cells_.end())
-        for (std::uint32_t f : it->second) visit(f);
-    });
-  }
-
- private:
-  template <class F>
-  void for_cells(const BoundingBox& b, F&& f) const {
-    auto cell = [&](double x) { return static_cast<std::int64_t>(std::floor(x * inverse_cell_)); };
-    for (std::int64_t i = cell(b.min.x); i <= cell(b.max.x); ++i)
-      for (std::int64_t j = cell(b.min.y); j <= cell(b.max.y); ++j)
-        for (std::int64_t k = cell(b.min.z); k <= cell(b.max.z); ++k)
-          f((std::uint64_t(i & 0x1fffff) << 42) | (std::uint64_t(j & 0x1fffff) << 21) | std::uint64_t(k & 0x1fffff));
-  }
-  const Mesh& m_;
-  double inverse_cell_;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
-};
 
 constexpr Index kNoVertex = ~Index{0};
 constexpr double kSameTagFlipCos = 0.9;    // faces within 26 degrees of each other
@@ -79,7 +48,8 @@ struct Edit {
 
 class Cleaner {
  public:
-  Cleaner(Mesh& m, const CleanupOptions& options) : m_(m), options_(options), alive_(m.faces.size(), 1) {
+  // `area`: the mesh's surface area, which the caller has measured.
+  Cleaner(Mesh& m, const CleanupOptions& options, double area) : m_(m), options_(options), alive_(m.faces.size(), 1) {
     faces_of_.resize(m.vertices.size());
     for (std::uint32_t f = 0; f < m.faces.size(); ++f)
       for (Index v : m.faces[f]) faces_of_[v].push_back(f);
@@ -89,9 +59,11 @@ class Cleaner {
       total += norm(m.vertices[t[1]] - m.vertices[t[0]]) + norm(m.vertices[t[2]] - m.vertices[t[1]]);
     }
     const double mean_edge = m.faces.empty() ? 1 : total / (2 * m.faces.size());
-    grid_ = std::make_unique<FaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
-    for (std::uint32_t f = 0; f < m.faces.size(); ++f) grid_->insert(f);
-    area_budget_ = options.max_area_change * surface_area(m);
+    grid_ = std::make_unique<CleanupFaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
+    seen_.assign(m.faces.size(), 0);
+    angle_.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
+    area_.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
+    area_budget_ = options.max_area_change * area;
     // Edits keep the topology, so a face stays in its component.
     Components components = connected_components(m);
     component_of_ = std::move(components.face_component);
@@ -107,15 +79,33 @@ class Cleaner {
   }
 
   void run(CleanupStats& stats) {
+    // A margin of a millionth, far above the rounding of atan2 and of the tangent.
+    const double tan_goal = std::tan(options_.min_angle_deg * std::numbers::pi / 180) * (1 + 1e-6);
+    // The first pass measures every face; a later one only the faces the one before
+    // listed or changed (touched_): no other face's corners moved, so its angle holds.
+    std::vector<std::pair<double, std::uint32_t>> distorted;
     for (int pass = 0; pass < options_.passes; ++pass) {
-      // Every face's angle in parallel; the list in face order, then sorted.
-      std::vector<double> angle(m_.faces.size());
-      const auto nf = static_cast<std::int64_t>(m_.faces.size());
+      if (pass == 0) {
+        // In parallel, atan2 only where the tangent leaves it in doubt; in face order.
+        std::vector<double> angle(m_.faces.size());
+        const auto nf = static_cast<std::int64_t>(m_.faces.size());
 #pragma omp parallel for schedule(static)
-      for (std::int64_t f = 0; f < nf; ++f) angle[f] = alive_[f] ? min_angle(static_cast<std::uint32_t>(f)) : 180;
-      std::vector<std::pair<double, std::uint32_t>> distorted;
-      for (std::uint32_t f = 0; f < m_.faces.size(); ++f)
-        if (alive_[f] && angle[f] < options_.min_angle_deg) distorted.emplace_back(angle[f], f);
+        for (std::int64_t f = 0; f < nf; ++f) {
+          const auto face = static_cast<std::uint32_t>(f);
+          angle[f] = alive_[f] && !surely_at_least(face, tan_goal) ? min_angle(face) : 180;
+        }
+        for (std::uint32_t f = 0; f < m_.faces.size(); ++f)
+          if (alive_[f] && angle[f] < options_.min_angle_deg) distorted.emplace_back(angle[f], f);
+      } else {
+        for (const auto& listed : distorted) touched_.push_back(listed.second);
+        std::sort(touched_.begin(), touched_.end());
+        touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+        distorted.clear();
+        for (std::uint32_t f : touched_)
+          if (alive_[f])
+            if (const double angle = min_angle(f); angle < options_.min_angle_deg) distorted.emplace_back(angle, f);
+      }
+      touched_.clear();
       if (distorted.empty()) break;
       std::sort(distorted.begin(), distorted.end());
       std::size_t done = 0;
@@ -135,9 +125,45 @@ class Cleaner {
   }
 
  private:
+  // A face's smallest angle and area, kept until its corners change (forget): every
+  // option tried around a distorted face measures the same faces before the change.
   double min_angle(std::uint32_t f) const {
+    if (std::isnan(angle_[f])) {
+      const Triangle& t = m_.faces[f];
+      angle_[f] = smallest_angle_deg(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
+    }
+    return angle_[f];
+  }
+  double area(std::uint32_t f) const {
+    if (std::isnan(area_[f])) area_[f] = face_area(m_, f);
+    return area_[f];
+  }
+  void forget(std::uint32_t f) {
+    angle_[f] = area_[f] = std::numeric_limits<double>::quiet_NaN();
+    touched_.push_back(f);
+  }
+  // Whether face f's smallest angle is surely not under the angle whose tangent is
+  // `tan_angle` (about a millionth over it): the corner smallest_angle_deg measures, on
+  // the tangent |u x w| / u.w instead of atan2, which costs several times more. A face it
+  // cannot clear (including a degenerate one) has its angle measured.
+  bool surely_at_least(std::uint32_t f, double tan_angle) const {
     const Triangle& t = m_.faces[f];
-    return smallest_angle_deg(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
+    const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
+    const Vec3 ab = b - a, bc = c - b, ca = a - c;
+    const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
+    Vec3 u, w;  // the two edges leaving the corner opposite the shortest edge
+    if (lab <= lbc && lab <= lca) {
+      u = a - c;
+      w = b - c;
+    } else if (lbc <= lca) {
+      u = b - a;
+      w = c - a;
+    } else {
+      u = c - b;
+      w = a - b;
+    }
+    const double sine = norm(cross(u, w)), cosine = dot(u, w);  // both times |u| |w|
+    return sine > 0 && (cosine <= 0 || sine >= cosine * tan_angle);
   }
   Vec3 normal(const Triangle& t) const {
     const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
@@ -172,11 +198,11 @@ class Cleaner {
     double before = 180, area_before = 0;
     for (std::uint32_t f : e.removed) {
       before = std::min(before, min_angle(f));
-      area_before += face_area(m_, f);
+      area_before += area(f);
     }
     for (std::uint32_t f : e.changed) {
       before = std::min(before, min_angle(f));
-      area_before += face_area(m_, f);
+      area_before += area(f);
     }
     double after = 180, area_after = 0;
     for (std::size_t k = 0; k < e.triangles.size(); ++k) {
@@ -225,30 +251,35 @@ class Cleaner {
   // Exactly: no face of the edit meets a face around it, or another face of the edit,
   // beyond the corners and edges they share.
   bool crosses_nothing(const Edit& e) {
-    skip_.assign(e.removed.begin(), e.removed.end());
-    skip_.insert(skip_.end(), e.changed.begin(), e.changed.end());
-    std::sort(skip_.begin(), skip_.end());
     Vec3 saved;
     if (e.moved != kNoVertex) {
       saved = m_.vertices[e.moved];
       m_.vertices[e.moved] = e.target;
     }
+    // The faces the edit removes or changes hold no stored box that is still right (the
+    // moved vertex is a corner of changed faces only): they are marked seen before each
+    // query. Faces whose box is apart from the new face's cannot meet it.
     bool ok = true;
     for (std::size_t k = 0; ok && k < e.triangles.size(); ++k) {
       const Triangle& t = e.triangles[k];
       BoundingBox box;
       for (Index w : t) box.extend(m_.vertices[w]);
-      candidates_.clear();
-      grid_->near(box, [&](std::uint32_t g) {
-        if (alive_[g] && !std::binary_search(skip_.begin(), skip_.end(), g)) candidates_.push_back(g);
+      if (++query_ == 0) {  // wrapped: no stale mark may match
+        std::fill(seen_.begin(), seen_.end(), 0);
+        query_ = 1;
+      }
+      for (const auto* list : {&e.removed, &e.changed})
+        for (std::uint32_t g : *list) seen_[g] = query_;
+      ok = grid_->near(box, [&](std::uint32_t g) {
+        if (seen_[g] == query_) return true;
+        seen_[g] = query_;
+        if (!alive_[g]) return true;
+        const BoundingBox& b = grid_->box(g);
+        if (b.max.x < box.min.x || box.max.x < b.min.x || b.max.y < box.min.y || box.max.y < b.min.y ||
+            b.max.z < box.min.z || box.max.z < b.min.z)
+          return true;
+        return acceptable(geometry::classify_triangle_pair(m_, t, m_.faces[g]));
       });
-      std::sort(candidates_.begin(), candidates_.end());
-      candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
-      for (std::uint32_t g : candidates_)
-        if (!acceptable(geometry::classify_triangle_pair(m_, t, m_.faces[g]))) {
-          ok = false;
-          break;
-        }
     }
     for (std::size_t i = 0; ok && i < e.triangles.size(); ++i)
       for (std::size_t j = i + 1; ok && j < e.triangles.size(); ++j)
@@ -280,6 +311,7 @@ class Cleaner {
     for (std::size_t k = 0; k < e.changed.size(); ++k) {
       const std::uint32_t f = e.changed[k];
       m_.faces[f] = e.triangles[k];
+      forget(f);
       grid_->insert(f);
       for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
     }
@@ -305,6 +337,7 @@ class Cleaner {
     for (const auto* list : {&e.removed, &e.changed})
       for (std::uint32_t f : *list) {
         alive_[f] = 1;
+        forget(f);
         grid_->insert(f);
         for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
       }
@@ -760,8 +793,12 @@ class Cleaner {
   const CleanupOptions& options_;
   std::vector<std::uint8_t> alive_;
   std::vector<std::vector<std::uint32_t>> faces_of_;
-  std::unique_ptr<FaceGrid> grid_;
-  std::vector<std::uint32_t> skip_, candidates_;
+  std::unique_ptr<CleanupFaceGrid> grid_;
+  // Per face: the query of the crossing test that last saw it (each face is tested once).
+  std::vector<std::uint32_t> seen_;
+  mutable std::vector<double> angle_, area_;  // per face; NaN: not measured since it changed
+  std::vector<std::uint32_t> touched_;  // faces changed or restored during the present pass
+  std::uint32_t query_ = 0;
   double area_budget_ = 0, area_drift_ = 0;
   std::vector<std::uint32_t> component_of_;  // per face
   std::vector<double> component_volume_, initial_volume_;
@@ -783,7 +820,7 @@ CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options) {
   CleanupStats stats;
   stats.before = mesh_quality(mesh);
   stats.area_before = surface_area(mesh);
-  if (!mesh.faces.empty()) Cleaner(mesh, options).run(stats);
+  if (!mesh.faces.empty()) Cleaner(mesh, options, stats.area_before).run(stats);
   stats.after = mesh_quality(mesh);
   stats.area_after = surface_area(mesh);
   return stats;

@@ -1,0 +1,107 @@
+#pragma once
+// The cleanup's spatial index of faces: which faces lie near a box, while the faces change.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "molsurf/mesh.hpp"
+
+namespace molsurf {
+
+// Faces by the cells of a uniform grid their boxes touch, with each face's box kept for a
+// cheap rejection. The exact crossing test of an edit needs every face near its new
+// faces; the faces change as the cleanup goes on, but only a few percent of them. So the
+// faces as they are at construction sit in flat arrays (cells in a dense grid over the
+// mesh's box, one counting pass and one filling pass), and a face that changes leaves
+// them for a small hash map of cells. Cells outside the dense grid are clamped onto its
+// border, the same way for insertion and query, so nothing is missed.
+class CleanupFaceGrid {
+ public:
+  // Cells of side `cell`, enlarged until the grid has at most about 4 cells per face (a
+  // surface fills few of a volume's cells; the capsid would otherwise need 64 M).
+  CleanupFaceGrid(const Mesh& m, double cell) : m_(m), box_(m.faces.size()), in_flat_(m.faces.size(), 1) {
+    const BoundingBox all = bounding_box(m);
+    origin_ = all.empty() ? Vec3{} : all.min;
+    const Vec3 extent = all.empty() ? Vec3{} : all.max - all.min;
+    const double max_cells = 4.0 * static_cast<double>(std::max<std::size_t>(m.faces.size(), 1)) + 64;
+    for (;;) {
+      for (int a = 0; a < 3; ++a) size_[a] = static_cast<std::int64_t>(std::floor(extent[a] / cell)) + 1;
+      if (static_cast<double>(size_[0]) * static_cast<double>(size_[1]) * static_cast<double>(size_[2]) <= max_cells)
+        break;
+      cell *= 1.25;
+    }
+    inverse_cell_ = 1.0 / cell;
+    const std::size_t cells = static_cast<std::size_t>(size_[0] * size_[1] * size_[2]);
+    start_.assign(cells + 1, 0);
+    const auto nf = static_cast<std::int64_t>(m.faces.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t f = 0; f < nf; ++f) box_[f] = bounding_box(m, static_cast<std::size_t>(f));
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f) for_cells(box_[f], [&](std::uint64_t c) { ++start_[c + 1]; });
+    for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+    flat_.resize(start_[cells]);
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f)
+      for_cells(box_[f], [&](std::uint64_t c) { flat_[fill[c]++] = f; });
+  }
+
+  // Before face f changes (or goes): its present cells forget it.
+  void erase(std::uint32_t f) {
+    if (in_flat_[f]) {
+      in_flat_[f] = 0;  // its flat entries are skipped from now on
+      return;
+    }
+    for_cells(box_[f], [&](std::uint64_t c) { std::erase(moved_[c], f); });
+  }
+  // After face f changed (or came back): indexed at its present corners.
+  void insert(std::uint32_t f) {
+    box_[f] = bounding_box(m_, f);
+    for_cells(box_[f], [&](std::uint64_t c) { moved_[c].push_back(f); });
+  }
+
+  const BoundingBox& box(std::uint32_t f) const { return box_[f]; }
+
+  // Calls visit(f) for every indexed face in a cell `box` touches (a face may come more
+  // than once) until visit returns false; returns false if it did.
+  template <class Visit>
+  bool near(const BoundingBox& box, Visit&& visit) const {
+    bool go_on = true;
+    for_cells(box, [&](std::uint64_t c) {
+      if (!go_on) return;
+      for (std::uint64_t k = start_[c]; go_on && k < start_[c + 1]; ++k)
+        if (in_flat_[flat_[k]]) go_on = visit(flat_[k]);
+      if (!go_on || moved_.empty()) return;
+      if (auto it = moved_.find(c); it != moved_.end())
+        for (std::uint32_t f : it->second)
+          if (!(go_on = visit(f))) return;
+    });
+    return go_on;
+  }
+
+ private:
+  template <class F>
+  void for_cells(const BoundingBox& b, F&& f) const {
+    auto cell = [&](double x, int a) {
+      const double i = std::floor((x - origin_[a]) * inverse_cell_);
+      return !(i > 0) ? std::int64_t{0} : i >= static_cast<double>(size_[a]) ? size_[a] - 1 : static_cast<std::int64_t>(i);
+    };
+    const std::int64_t i0 = cell(b.min.x, 0), i1 = cell(b.max.x, 0), j0 = cell(b.min.y, 1), j1 = cell(b.max.y, 1),
+                       k0 = cell(b.min.z, 2), k1 = cell(b.max.z, 2);
+    for (std::int64_t i = i0; i <= i1; ++i)
+      for (std::int64_t j = j0; j <= j1; ++j)
+        for (std::int64_t k = k0; k <= k1; ++k) f(static_cast<std::uint64_t>((i * size_[1] + j) * size_[2] + k));
+  }
+
+  const Mesh& m_;
+  Vec3 origin_;
+  double inverse_cell_ = 1;
+  std::int64_t size_[3] = {1, 1, 1};
+  std::vector<BoundingBox> box_;          // per face, as indexed
+  std::vector<std::uint64_t> start_;      // per cell of the dense grid: its range in flat_
+  std::vector<std::uint32_t> flat_;       // the faces as they were at construction
+  std::vector<std::uint8_t> in_flat_;     // per face: its flat entries still hold
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> moved_;  // faces changed since
+};
+
+}  // namespace molsurf
