@@ -25,6 +25,7 @@
 
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
+#include "common/thread_count_scope.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 
@@ -261,6 +262,43 @@ TEST_F(MeshIoTest, VtpCarriesAtomDataPerFace) {
   write_mesh(dir_ / "atoms.vtp", mesh, {.atoms = atoms});
   EXPECT_NE(slurp(dir_ / "atoms.vtp").find("vtkZLibDataCompressor"), std::string::npos);
   expect_atom_cell_data(read_with_vtk<vtkXMLPolyDataReader>(dir_ / "atoms.vtp"), mesh, atoms);
+}
+
+// Arrays of many zlib blocks (32 KiB each), compressed in parallel: VTK's own reader and
+// ours get the same points (exactly), triangles and tags, for any thread count.
+TEST_F(MeshIoTest, VtpOfManyBlocksReadsBackExactlyInVtkAndOurs) {
+  Mesh mesh = make_icosphere({1.1, -2.3, 0.7}, 1.7, IcosphereOptions{.frequency = 40, .tag = 0});
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) mesh.face_tags[f] = static_cast<std::int32_t>(f % 7);
+  ASSERT_GT(3 * 4 * mesh.face_count(), 8 * 32768u) << "connectivity should span several blocks";
+  std::string first;
+  for (const int threads : {1, 2}) {
+    const ThreadCountScope scope(threads);
+    write_mesh(dir_ / "big.vtp", mesh);
+    const std::string bytes = slurp(dir_ / "big.vtp");
+    if (first.empty()) first = bytes;
+    EXPECT_EQ(bytes, first) << "the file depends on the thread count";
+  }
+  const vtkSmartPointer<vtkPolyData> vtk = read_with_vtk<vtkXMLPolyDataReader>(dir_ / "big.vtp");
+  ASSERT_EQ(vtk->GetNumberOfPoints(), static_cast<vtkIdType>(mesh.vertex_count()));
+  ASSERT_EQ(vtk->GetNumberOfCells(), static_cast<vtkIdType>(mesh.face_count()));
+  for (std::size_t v = 0; v < mesh.vertex_count(); v += 97) {
+    const double* p = vtk->GetPoint(static_cast<vtkIdType>(v));
+    EXPECT_EQ(Vec3(p[0], p[1], p[2]), mesh.vertices[v]);
+  }
+  auto* tag = vtkIntArray::SafeDownCast(vtk->GetCellData()->GetAbstractArray("tag"));
+  ASSERT_NE(tag, nullptr);
+  for (std::size_t f = 0; f < mesh.face_count(); f += 89) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    vtk->GetCellPoints(static_cast<vtkIdType>(f), n, ids);
+    ASSERT_EQ(n, 3);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(ids[k], static_cast<vtkIdType>(mesh.faces[f][k]));
+    EXPECT_EQ(tag->GetValue(static_cast<vtkIdType>(f)), mesh.face_tags[f]);
+  }
+  const Mesh ours = read_mesh(dir_ / "big.vtp");
+  EXPECT_EQ(ours.vertices, mesh.vertices);
+  EXPECT_EQ(ours.faces, mesh.faces);
+  EXPECT_EQ(ours.face_tags, mesh.face_tags);
 }
 
 // Legacy binary field arrays: "NAME 1 COUNT int\n" then COUNT big-endian int32.

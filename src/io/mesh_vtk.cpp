@@ -1,7 +1,6 @@
-// VTK PolyData written through VTK itself: XML .vtp (binary, zlib-compressed, appended) and
-// legacy .vtk (binary, file version 4.2 so that pre-9.0 readers open it too). Both are
-// read by readers of our own (mesh_vtp.cpp, mesh_vtk_legacy.cpp), since VTK's trust every
-// size in the file.
+// Legacy VTK PolyData written through VTK itself (binary, file version 4.2 so that pre-9.0
+// readers open it too; .vtp has a writer of our own, mesh_vtp_writer.cpp). Read by a
+// reader of our own (mesh_vtk_legacy.cpp), since VTK's trusts every size in the file.
 // Stored: double points (exact), area-weighted point normals, cell data "tag" and,
 // when atoms are given, "atom_serial", "residue_number", "residue_name", "chain" of
 // each face's atom. VTK writes to AtomicFile's temporary, never to the target itself.
@@ -19,7 +18,6 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkStringArray.h>
-#include <vtkXMLPolyDataWriter.h>
 
 
 #include "io/atomic_file.hpp"
@@ -129,18 +127,6 @@ void write_with(vtkNew<Writer>& writer, AtomicFileSet& files, const path& file, 
 }
 
 }  // namespace
-
-void write_vtp(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();  // raw bytes, not base64
-  writer->SetCompressorTypeToZLib();
-  // Level 1 rather than zlib's default: on 2hhb the file is 2 % larger and the write
-  // stage drops from 0.28 to 0.20 s.
-  writer->SetCompressionLevel(1);
-  writer->SetHeaderTypeToUInt64();  // arrays beyond 4 GB stay readable
-  write_with(writer, files, file, mesh, options);
-}
 
 void write_vtk(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   vtkNew<vtkPolyDataWriter> writer;
