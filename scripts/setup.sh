@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs molsurf's system dependencies (Debian 12, idempotent) and builds the release preset.
+# Installs molsurf's system dependencies (Debian 12, idempotent) and builds the release preset,
+# the Python module included (build/release/python; Debian's python3-gemmi is gemmi-dev's version,
+# which lets gemmi.Structure objects pass to molsurf without a file).
 # Usage: scripts/setup.sh [release|debug]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -7,7 +9,9 @@ preset="${1:-release}"
 
 packages=(build-essential cmake ninja-build pkg-config
   gemmi-dev tao-pegtl-dev zlib1g-dev libeigen3-dev libvtk9-dev libcli11-dev
-  googletest libgtest-dev libgmp-dev libmimalloc-dev)
+  googletest libgtest-dev libgmp-dev libmimalloc-dev
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-gemmi
+  python3-matplotlib python3-meshio)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -33,6 +33,20 @@ Mesh outer_surface_only(const Mesh& mesh);
 // Area of the faces tagged with each atom (faces tagged outside [0, atom_count) are ignored).
 std::vector<double> area_per_atom(const Mesh& mesh, std::size_t atom_count);
 
+// One residue's share of the surface: the summed area of its atoms.
+struct ResidueArea {
+  std::string chain;
+  std::string residue_name;
+  int residue_number = 0;
+  char insertion_code = ' ';
+  std::size_t atoms = 0;  // atoms of the structure in this residue (buried ones too)
+  double area = 0;        // square angstrom
+};
+
+// Residues (same chain, number, insertion code and name) in order of first appearance,
+// with the summed `atom_area` of their atoms (one value per atom, as area_per_atom gives).
+std::vector<ResidueArea> area_per_residue(std::span<const Atom> atoms, std::span<const double> atom_area);
+
 struct StageTimes {  // seconds
   double read = 0, surface = 0, cleanup = 0, write = 0, check = 0;
 };

@@ -19,6 +19,7 @@
 
 #include "io/structure_readers.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/gemmi_structure.hpp"
 
 namespace molsurf::detail {
 namespace {
@@ -172,6 +173,11 @@ ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat 
     throw Error(message_with_file(path, e.what()));
   }
 
+  return records_from_gemmi(structure, path, model);
+}
+
+ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& path,
+                                std::optional<int> model) {
   ModelRecords result;
   const gemmi::Model* chosen = nullptr;
   for (std::size_t i = 0; i < structure.models.size(); ++i) {
@@ -220,3 +226,18 @@ ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat 
 }
 
 }  // namespace molsurf::detail
+
+namespace molsurf {
+
+Structure structure_from_gemmi(const gemmi::Structure& structure, const ReadOptions& options,
+                               const std::filesystem::path& source) {
+  const std::filesystem::path name = source.empty() ? std::filesystem::path(structure.name) : source;
+  const StructureFormat format =
+      structure.input_format == gemmi::CoorFormat::Pdb ? StructureFormat::pdb : StructureFormat::mmcif;
+  // The radius table first, as read_structure does: a bad table fails before any work.
+  const std::optional<RadiusTable> table = detail::radius_table_for(format, options);
+  return detail::select_atoms(detail::records_from_gemmi(structure, name, options.model), name, format, options,
+                              table);
+}
+
+}  // namespace molsurf

@@ -224,14 +224,23 @@ Structure read_structure(const std::filesystem::path& path, const ReadOptions& o
   if (format == StructureFormat::xyzr) return read_sphere_list(path, options);
 
   // The table is read first so a bad radius file fails before a long structure read.
-  std::optional<RadiusTable> table;
-  if (format != StructureFormat::pqr)
-    table = options.radius_file.empty() ? RadiusTable::builtin(options.radius_set)
-                                        : RadiusTable::from_file(options.radius_file);
-
+  const std::optional<RadiusTable> table = detail::radius_table_for(format, options);
   detail::ModelRecords model = format == StructureFormat::pqr
                                    ? detail::read_pqr(path, options.model)
                                    : detail::read_with_gemmi(path, format, options.model);
+  return detail::select_atoms(std::move(model), path, format, options, table);
+}
+
+namespace detail {
+
+std::optional<RadiusTable> radius_table_for(StructureFormat format, const ReadOptions& options) {
+  if (format == StructureFormat::pqr || format == StructureFormat::xyzr) return std::nullopt;
+  return options.radius_file.empty() ? RadiusTable::builtin(options.radius_set)
+                                     : RadiusTable::from_file(options.radius_file);
+}
+
+Structure select_atoms(ModelRecords model, const std::filesystem::path& path, StructureFormat format,
+                       const ReadOptions& options, const std::optional<RadiusTable>& table) {
   Structure structure;
   ReadReport& report = structure.report;
   report.file = path;
@@ -291,5 +300,7 @@ Structure read_structure(const std::filesystem::path& path, const ReadOptions& o
   count_elements(structure.atoms, report);
   return structure;
 }
+
+}  // namespace detail
 
 }  // namespace molsurf

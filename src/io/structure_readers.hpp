@@ -12,6 +12,10 @@
 #include "io/coordinate_range.hpp"
 #include "molsurf/atoms.hpp"
 
+namespace gemmi {
+struct Structure;
+}
+
 namespace molsurf::detail {
 
 struct AtomRecord {
@@ -28,9 +32,19 @@ struct ModelRecords {
 // PDB or mmCIF, plain or gzipped. The only translation unit that includes gemmi.
 ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
                              std::optional<int> model);
+// The records of one model of a structure gemmi holds in memory; `source` names it in messages.
+ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& source,
+                                std::optional<int> model);
 ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model);
 // Spheres as given: x y z r [name]; radii are already set.
 std::vector<Atom> read_xyzr(const std::filesystem::path& path);
+
+// The radius table `options` ask for, for a format without radii of its own (none for PQR, xyzr).
+std::optional<RadiusTable> radius_table_for(StructureFormat format, const ReadOptions& options);
+// The selection rules and the radii applied to one model's records: what read_structure
+// returns for a file of that format. `path` names the input in messages and the report.
+Structure select_atoms(ModelRecords model, const std::filesystem::path& path, StructureFormat format,
+                       const ReadOptions& options, const std::optional<RadiusTable>& table);
 
 // Small text helpers shared by the PQR, xyzr and radius-table parsers.
 std::vector<std::string_view> split_fields(std::string_view line);  // on spaces and tabs

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <map>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "io/atomic_file.hpp"
@@ -184,30 +186,31 @@ void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom>
   write_file_atomically(path, per_atom_csv(atoms, area));
 }
 
-std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area) {
-  // Residues in order of first appearance.
+std::vector<ResidueArea> area_per_residue(std::span<const Atom> atoms, std::span<const double> atom_area) {
+  if (atom_area.size() != atoms.size())
+    throw std::invalid_argument("area_per_residue: " + std::to_string(atom_area.size()) + " areas for " +
+                                std::to_string(atoms.size()) + " atoms");
   using Key = std::tuple<std::string, int, char, std::string>;
   std::map<Key, std::size_t> index;
-  std::vector<std::pair<Key, double>> rows;
-  std::vector<std::size_t> atoms_in;
+  std::vector<ResidueArea> rows;
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom& a = atoms[i];
-    const Key key{a.chain, a.residue_number, a.insertion_code, a.residue_name};
-    auto [it, inserted] = index.try_emplace(key, rows.size());
-    if (inserted) {
-      rows.emplace_back(key, 0.0);
-      atoms_in.push_back(0);
-    }
-    rows[it->second].second += area[i];
-    ++atoms_in[it->second];
+    const auto [it, inserted] =
+        index.try_emplace(Key{a.chain, a.residue_number, a.insertion_code, a.residue_name}, rows.size());
+    if (inserted) rows.push_back({a.chain, a.residue_name, a.residue_number, a.insertion_code, 0, 0.0});
+    ResidueArea& row = rows[it->second];
+    row.area += atom_area[i];
+    ++row.atoms;
   }
+  return rows;
+}
+
+std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area) {
   std::string csv = "chain,residue_name,residue_number,insertion_code,atoms,area\n";
   char line[256];
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const auto& [key, a] = rows[k];
-    const char icode = std::get<2>(key);
-    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%.4f\n", std::get<0>(key).c_str(), std::get<3>(key).c_str(),
-                  std::get<1>(key), icode == ' ' ? '_' : icode, atoms_in[k], a);
+  for (const ResidueArea& r : area_per_residue(atoms, area)) {
+    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%.4f\n", r.chain.c_str(), r.residue_name.c_str(),
+                  r.residue_number, r.insertion_code == ' ' ? '_' : r.insertion_code, r.atoms, r.area);
     csv += line;
   }
   return csv;

@@ -1,0 +1,806 @@
+// The Python module `molsurf`: converts arguments and results between Python (NumPy
+// arrays, paths, gemmi.Structure objects) and libmolsurf. Every rule of the surface job
+// lives in the library (compute_surface, read_structure, check_mesh, boolean ...); this
+// file only translates, and releases the GIL while the library works.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <gemmi/model.hpp>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/boolean.hpp"
+#include "molsurf/compute_surface.hpp"
+#include "molsurf/error.hpp"
+#include "molsurf/gemmi_structure.hpp"
+#include "molsurf/io.hpp"
+#include "molsurf/mesh.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/output_files.hpp"
+#include "molsurf/resource_limits.hpp"
+#include "molsurf/surface.hpp"
+#include "molsurf/surface_report.hpp"
+#include "molsurf/written_check.hpp"
+
+namespace py = pybind11;
+using namespace py::literals;
+
+namespace {
+
+using molsurf::Error;
+
+// Vertices are handed to NumPy as an (V, 3) float64 view of the mesh's own memory.
+static_assert(sizeof(molsurf::Vec3) == 3 * sizeof(double) && std::is_standard_layout_v<molsurf::Vec3>);
+static_assert(sizeof(molsurf::Triangle) == 3 * sizeof(std::uint32_t));
+
+// Results are shared, immutable C++ objects: the NumPy views handed out keep the Python
+// object that owns them alive (the array's base), so no array outlives its memory.
+struct PyStructure {
+  std::shared_ptr<const molsurf::Structure> structure;
+};
+
+struct PyMesh {
+  std::shared_ptr<const molsurf::Mesh> mesh;
+};
+
+struct SurfaceData {
+  molsurf::ComputedSurface computed;
+  std::shared_ptr<const molsurf::Structure> structure;  // the atoms the face tags index
+  molsurf::SphereOptions spheres;
+};
+
+struct PySurface {
+  std::shared_ptr<const SurfaceData> data;
+};
+
+// A read-only NumPy array over `data`, kept alive by `owner`.
+template <class T>
+py::array read_only_view(const T* data, std::vector<py::ssize_t> shape, py::handle owner) {
+  py::array array(py::dtype::of<T>(), std::move(shape), data, owner);
+  py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return array;
+}
+
+py::array vertices_view(const molsurf::Mesh& mesh, py::handle owner) {
+  return read_only_view(reinterpret_cast<const double*>(mesh.vertices.data()),
+                        {static_cast<py::ssize_t>(mesh.vertex_count()), 3}, owner);
+}
+
+// Faces as int32 (the library's indices are uint32; a mesh with 2^31 vertices would not
+// fit in memory, so every index is a valid int32 and the bits are the same).
+py::array faces_view(const molsurf::Mesh& mesh, py::handle owner) {
+  if (mesh.vertex_count() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw std::overflow_error("mesh has more vertices than int32 indices can address");
+  return read_only_view(reinterpret_cast<const std::int32_t*>(mesh.faces.data()),
+                        {static_cast<py::ssize_t>(mesh.face_count()), 3}, owner);
+}
+
+py::array tags_view(const molsurf::Mesh& mesh, py::handle owner) {
+  if (!mesh.has_tags()) {
+    // Untagged faces: -1 each (a fresh array, as there is no memory to view).
+    py::array_t<std::int32_t> tags(static_cast<py::ssize_t>(mesh.face_count()));
+    std::fill_n(tags.mutable_data(), mesh.face_count(), molsurf::kNoTag);
+    return tags;
+  }
+  return read_only_view(mesh.face_tags.data(), {static_cast<py::ssize_t>(mesh.face_count())}, owner);
+}
+
+// ---- arguments -------------------------------------------------------------------------
+
+std::string shape_text(const py::array& a) {
+  std::string text = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) text += (i ? ", " : "") + std::to_string(a.shape(i));
+  return text + (a.ndim() == 1 ? ",)" : ")");
+}
+
+template <class T>
+py::array_t<T, py::array::c_style | py::array::forcecast> as_array(py::handle value, const char* name) {
+  auto array = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(value);
+  if (!array) throw Error(std::string(name) + ": not convertible to a numeric array");
+  return array;
+}
+
+molsurf::Mesh mesh_from_arrays(py::handle vertices, py::handle faces, py::handle tags) {
+  const auto v = as_array<double>(vertices, "vertices");
+  const auto f = as_array<std::int64_t>(faces, "faces");
+  if (v.ndim() != 2 || v.shape(1) != 3)
+    throw Error("vertices: expected an array of shape (V, 3), got " + shape_text(v));
+  if (f.ndim() != 2 || f.shape(1) != 3) throw Error("faces: expected an array of shape (F, 3), got " + shape_text(f));
+  molsurf::Mesh mesh;
+  const auto vertex_count = static_cast<std::size_t>(v.shape(0));
+  mesh.vertices.resize(vertex_count);
+  const double* xyz = v.data();
+  for (std::size_t i = 0; i < vertex_count; ++i) mesh.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  const auto face_count = static_cast<std::size_t>(f.shape(0));
+  mesh.faces.resize(face_count);
+  const std::int64_t* index = f.data();
+  for (std::size_t i = 0; i < 3 * face_count; ++i) {
+    if (index[i] < 0 || static_cast<std::uint64_t>(index[i]) >= vertex_count)
+      throw Error("faces: face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(index[i]) +
+                  ", but there are " + std::to_string(vertex_count) + " vertices");
+    mesh.faces[i / 3][i % 3] = static_cast<molsurf::Index>(index[i]);
+  }
+  if (!tags.is_none()) {
+    const auto t = as_array<std::int32_t>(tags, "tags");
+    if (t.ndim() != 1 || static_cast<std::size_t>(t.shape(0)) != face_count)
+      throw Error("tags: expected one per face, shape (" + std::to_string(face_count) + ",), got " + shape_text(t));
+    mesh.face_tags.assign(t.data(), t.data() + face_count);
+  }
+  return mesh;
+}
+
+// A Mesh, or a (vertices, faces) pair of arrays.
+std::shared_ptr<const molsurf::Mesh> mesh_argument(py::handle value, const char* name) {
+  if (py::isinstance<PyMesh>(value)) return value.cast<const PyMesh&>().mesh;
+  if ((py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) && py::len(value) == 2) {
+    const auto pair = py::reinterpret_borrow<py::sequence>(value);
+    return std::make_shared<const molsurf::Mesh>(mesh_from_arrays(pair[0], pair[1], py::none()));
+  }
+  throw Error(std::string(name) + ": expected a molsurf.Mesh or a (vertices, faces) pair of arrays");
+}
+
+molsurf::ReadOptions read_options(std::optional<int> model, py::object chains, bool keep_water, bool hydrogens,
+                                  bool hetatm, const std::string& radius_set,
+                                  std::optional<std::filesystem::path> radius_file) {
+  molsurf::ReadOptions options;
+  options.model = model;
+  if (py::isinstance<py::str>(chains)) {
+    // "A,C" as on the command line.
+    const std::string list = chains.cast<std::string>();
+    std::size_t start = 0;
+    while (start <= list.size()) {
+      const std::size_t end = std::min(list.find(',', start), list.size());
+      if (end > start) options.chains.push_back(list.substr(start, end - start));
+      start = end + 1;
+    }
+  } else if (!chains.is_none()) {
+    options.chains = chains.cast<std::vector<std::string>>();
+  }
+  options.keep_water = keep_water;
+  options.keep_hydrogens = hydrogens;
+  options.keep_hetatm = hetatm;
+  if (radius_set != "protor" && radius_set != "bondi")
+    throw Error("radius_set: '" + radius_set + "' is not a built-in radius set (protor or bondi)");
+  options.radius_set = radius_set;
+  if (radius_file) options.radius_file = *radius_file;
+  return options;
+}
+
+bool is_gemmi_structure(py::handle value) {
+  const py::handle type = reinterpret_cast<PyObject*>(Py_TYPE(value.ptr()));
+  return py::str(type.attr("__module__")).cast<std::string>() == "gemmi" &&
+         py::str(type.attr("__name__")).cast<std::string>() == "Structure";
+}
+
+// The object behind a gemmi.Structure: gemmi's module registers its C++ type with
+// pybind11, and modules built with the same compiler and pybind11 ABI share that registry.
+const gemmi::Structure& gemmi_structure(py::handle value) {
+  try {
+    return value.cast<const gemmi::Structure&>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(
+        "this gemmi.Structure comes from a gemmi module built with another pybind11 ABI than molsurf "
+        "(use the gemmi of the same distribution, e.g. Debian's python3-gemmi for gemmi-dev), or pass the "
+        "file's path instead");
+  }
+}
+
+// A path (str or os.PathLike) or a gemmi.Structure, read with `options`.
+std::shared_ptr<const molsurf::Structure> read_atoms(py::handle source, const molsurf::ReadOptions& options) {
+  if (is_gemmi_structure(source)) {
+    const gemmi::Structure& st = gemmi_structure(source);
+    py::gil_scoped_release release;  // the gemmi.Structure is kept alive by the caller's reference
+    return std::make_shared<const molsurf::Structure>(molsurf::structure_from_gemmi(st, options));
+  }
+  if (!py::isinstance<py::str>(source) && !py::hasattr(source, "__fspath__"))
+    throw py::type_error("structure: expected a path, a molsurf.Structure or a gemmi.Structure, not " +
+                         py::str(py::type::of(source).attr("__name__")).cast<std::string>());
+  const auto path = source.cast<std::filesystem::path>();
+  py::gil_scoped_release release;
+  return std::make_shared<const molsurf::Structure>(molsurf::read_structure(path, options));
+}
+
+PyStructure read_structure_py(py::object source, std::optional<int> model, py::object chains, bool keep_water,
+                              bool hydrogens, bool hetatm, const std::string& radius_set,
+                              std::optional<std::filesystem::path> radius_file) {
+  return {read_atoms(source, read_options(model, std::move(chains), keep_water, hydrogens, hetatm, radius_set,
+                                          std::move(radius_file)))};
+}
+
+molsurf::SurfaceMethod surface_method(const std::string& name) {
+  if (name == "one-pass" || name == "one_pass") return molsurf::SurfaceMethod::one_pass;
+  if (name == "pairwise") return molsurf::SurfaceMethod::pairwise;
+  throw Error("method: '" + name + "' is not a surface method (one-pass or pairwise)");
+}
+
+std::shared_ptr<const molsurf::Structure> atoms_from_arrays(py::handle centres, py::handle radii) {
+  const auto c = as_array<double>(centres, "centres");
+  const auto r = as_array<double>(radii, "radii");
+  if (c.ndim() != 2 || c.shape(1) != 3)
+    throw Error("centres: expected an array of shape (N, 3), got " + shape_text(c));
+  if (r.ndim() != 1 || r.shape(0) != c.shape(0))
+    throw Error("radii: expected one per centre, shape (" + std::to_string(c.shape(0)) + ",), got " + shape_text(r));
+  auto structure = std::make_shared<molsurf::Structure>();
+  const auto n = static_cast<std::size_t>(c.shape(0));
+  structure->atoms.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    molsurf::Atom& atom = structure->atoms[i];
+    atom.centre = {c.data()[3 * i], c.data()[3 * i + 1], c.data()[3 * i + 2]};
+    atom.radius = r.data()[i];
+    atom.serial = static_cast<int>(i + 1);
+  }
+  structure->report.file = "atoms";
+  structure->report.format = molsurf::StructureFormat::xyzr;  // spheres as given
+  structure->report.records = structure->report.kept = n;
+  structure->report.radius_set = "given";
+  return structure;
+}
+
+PySurface surface_py(py::object structure, py::object centres, py::object radii, double probe, double density,
+                     std::optional<int> frequency, const std::string& method, bool cleanup, bool outer_only,
+                     bool area_corrected, bool check, int threads, std::uint64_t max_faces, std::optional<int> model,
+                     py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
+                     std::optional<std::filesystem::path> radius_file) {
+  if (!std::isfinite(probe) || probe < 0) throw Error("probe: must be a finite number >= 0 (angstrom)");
+  if (!std::isfinite(density) || density <= 0) throw Error("density: must be a finite number > 0 (vertices/A^2)");
+  if (frequency && (*frequency < 1 || *frequency > 200)) throw Error("frequency: must be 1 to 200");
+  if (threads < 0 || threads > 1024) throw Error("threads: must be 0 (all cores) to 1024");
+
+  auto data = std::make_shared<SurfaceData>();
+  const bool arrays = !centres.is_none() || !radii.is_none();
+  if (arrays) {
+    if (!structure.is_none()) throw Error("give either a structure or centres and radii, not both");
+    if (centres.is_none() || radii.is_none()) throw Error("centres and radii go together");
+    data->structure = atoms_from_arrays(centres, radii);
+  } else if (structure.is_none()) {
+    throw Error("nothing to compute: give a structure (path, molsurf.Structure, gemmi.Structure) or centres and radii");
+  } else if (py::isinstance<PyStructure>(structure)) {
+    data->structure = structure.cast<const PyStructure&>().structure;
+  } else {
+    data->structure = read_atoms(structure, read_options(model, chains, keep_water, hydrogens, hetatm, radius_set,
+                                                         std::move(radius_file)));
+  }
+
+  molsurf::ComputeSurfaceOptions options;
+  options.spheres.probe = probe;
+  options.spheres.density = density;
+  options.spheres.frequency = frequency.value_or(0);
+  options.spheres.area_corrected = area_corrected;
+  options.method = surface_method(method);
+  options.threads = threads;
+  options.outer_only = outer_only;
+  options.cleanup = cleanup;
+  options.check_self_intersections = check;
+  options.max_sphere_faces = max_faces;
+  options.source = data->structure->report.file;
+  data->spheres = options.spheres;
+  // Ctrl-C: the library reports progress at least at the start and end of every stage;
+  // where that happens outside a parallel region (so an exception may leave it), a pending
+  // KeyboardInterrupt is raised there, ending the computation at the next stage boundary.
+  options.progress = [](molsurf::SurfaceStage, std::size_t, std::size_t) {
+    if (omp_get_level() > 0) return;  // inside a parallel region, even a one-thread one
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+  {
+    // Other Python threads run meanwhile.
+    py::gil_scoped_release release;
+    data->computed = molsurf::compute_surface(data->structure->atoms, options);
+  }
+  return {std::move(data)};
+}
+
+// ---- results -----------------------------------------------------------------------------
+
+py::object string_array(const std::vector<std::string>& values) {
+  return py::module_::import("numpy").attr("array")(py::cast(values), "dtype"_a = "str");
+}
+
+template <class T, class Get>
+py::array_t<T> atom_column(const molsurf::Structure& s, Get get) {
+  py::array_t<T> out(static_cast<py::ssize_t>(s.atoms.size()));
+  T* values = out.mutable_data();
+  for (std::size_t i = 0; i < s.atoms.size(); ++i) values[i] = static_cast<T>(get(s.atoms[i]));
+  return out;
+}
+
+template <class Get>
+py::object label_column(const molsurf::Structure& s, Get get) {
+  std::vector<std::string> values;
+  values.reserve(s.atoms.size());
+  for (const molsurf::Atom& atom : s.atoms) values.push_back(get(atom));
+  return string_array(values);
+}
+
+std::string icode_text(char icode) { return icode == ' ' || icode == '\0' ? std::string() : std::string(1, icode); }
+
+const char* format_name(molsurf::StructureFormat format) {
+  switch (format) {
+    case molsurf::StructureFormat::pdb: return "pdb";
+    case molsurf::StructureFormat::mmcif: return "mmcif";
+    case molsurf::StructureFormat::pqr: return "pqr";
+    case molsurf::StructureFormat::xyzr: return "xyzr";
+  }
+  return "?";
+}
+
+py::dict read_report_dict(const molsurf::ReadReport& r) {
+  return py::dict("file"_a = r.file.string(), "format"_a = format_name(r.format),
+                  "models_in_file"_a = r.models_in_file, "model_used"_a = r.model_used, "records"_a = r.records,
+                  "kept"_a = r.kept, "dropped_water"_a = r.dropped_water, "dropped_hydrogen"_a = r.dropped_hydrogen,
+                  "dropped_altloc"_a = r.dropped_altloc, "dropped_hetatm"_a = r.dropped_hetatm,
+                  "dropped_chain"_a = r.dropped_chain, "kept_by_element"_a = r.kept_by_element,
+                  "radius_set"_a = r.radius_set, "radius_from_element"_a = r.radius_from_element,
+                  "radius_default"_a = r.radius_default, "fallback_examples"_a = r.fallback_examples);
+}
+
+py::object residue_table(const molsurf::Structure& s, const std::vector<double>& atom_area) {
+  const std::vector<molsurf::ResidueArea> rows = molsurf::area_per_residue(s.atoms, atom_area);
+  std::size_t chain_width = 1, name_width = 1;
+  py::list records;
+  for (const molsurf::ResidueArea& r : rows) {
+    chain_width = std::max(chain_width, r.chain.size());
+    name_width = std::max(name_width, r.residue_name.size());
+    records.append(py::make_tuple(r.chain, r.residue_name, r.residue_number, icode_text(r.insertion_code), r.atoms,
+                                  r.area));
+  }
+  py::list dtype;
+  dtype.append(py::make_tuple("chain", "U" + std::to_string(chain_width)));
+  dtype.append(py::make_tuple("residue_name", "U" + std::to_string(name_width)));
+  dtype.append(py::make_tuple("residue_number", "i4"));
+  dtype.append(py::make_tuple("insertion_code", "U1"));
+  dtype.append(py::make_tuple("atoms", "i8"));
+  dtype.append(py::make_tuple("area", "f8"));
+  return py::module_::import("numpy").attr("array")(records, "dtype"_a = dtype);
+}
+
+std::vector<std::filesystem::path> write_surface(const SurfaceData& d, const std::filesystem::path& path, bool ascii,
+                                                 int msms_decimals, bool msms_header) {
+  const std::vector<std::filesystem::path> inputs;
+  const std::vector<molsurf::OutputRequest> outputs{{path, "path", true}};
+  molsurf::check_output_paths(inputs, outputs);
+  molsurf::MeshWriteOptions options;
+  options.atoms = d.structure->atoms;
+  options.ascii = ascii;
+  options.msms_decimals = msms_decimals;
+  options.msms_header = msms_header;
+  options.probe_radius = d.spheres.probe;
+  options.density = d.spheres.density;
+  molsurf::MeshCheckOptions check_options;
+  check_options.self_intersections = d.computed.check.self_intersections_checked;
+  // Lossy formats (.vert, .stl): the surface is checked as the file will hold it, as the
+  // command line does.
+  const molsurf::WrittenCheck written =
+      molsurf::check_as_written(path, d.computed.mesh, d.computed.check, options, check_options,
+                                [](const molsurf::MeshCheck& c) { return c.valid(); });
+  molsurf::OutputFiles files;
+  files.add_mesh(path, d.computed.mesh, written.options);
+  std::vector<std::filesystem::path> paths = files.commit();
+  if (!written.note.empty()) {
+    py::gil_scoped_acquire acquire;
+    py::module_::import("warnings").attr("warn")(written.note);
+  }
+  return paths;
+}
+
+py::dict cleanup_dict(const molsurf::CleanupStats& c) {
+  return py::dict("collapses"_a = c.collapses, "flips"_a = c.flips, "moves"_a = c.moves, "refused"_a = c.refused,
+                  "area_before"_a = c.area_before, "area_after"_a = c.area_after,
+                  "min_angle_before"_a = c.before.min_angle_deg, "min_angle_after"_a = c.after.min_angle_deg);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(molsurf, m) {
+  m.doc() =
+      "Exact, watertight molecular surfaces (libmolsurf from Python).\n\n"
+      "Lengths are in angstrom (A), areas in A^2, volumes in A^3. Arrays are NumPy arrays:\n"
+      "geometry of a result (vertices, faces, atom_of_face, area_per_atom) is a read-only view\n"
+      "of the result's own memory (np.array(x) copies it); everything else is a fresh copy.\n"
+      "Every library error raises molsurf.Error (a RuntimeError) with the library's message.";
+  m.attr("__version__") = MOLSURF_VERSION;
+  py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+
+  // ---- Structure ----
+  py::class_<PyStructure>(m, "Structure",
+                          "Atoms read from a structure file: the selected model, filtered and given radii.\n"
+                          "Every array property is a fresh copy, one row per atom.")
+      .def("__len__", [](const PyStructure& s) { return s.structure->atoms.size(); })
+      .def_property_readonly(
+          "centres",
+          [](const PyStructure& s) {
+            py::array_t<double> out({static_cast<py::ssize_t>(s.structure->atoms.size()), py::ssize_t{3}});
+            double* xyz = out.mutable_data();
+            for (const molsurf::Atom& a : s.structure->atoms) {
+              *xyz++ = a.centre.x;
+              *xyz++ = a.centre.y;
+              *xyz++ = a.centre.z;
+            }
+            return out;
+          },
+          "Atom centres, (N, 3) float64, A (copy).")
+      .def_property_readonly(
+          "radii", [](const PyStructure& s) { return atom_column<double>(*s.structure, [](auto& a) { return a.radius; }); },
+          "Van der Waals radii without the probe, (N,) float64, A (copy).")
+      .def_property_readonly(
+          "elements", [](const PyStructure& s) { return label_column(*s.structure, [](auto& a) { return a.element; }); },
+          "Element symbols, upper case, (N,) str (copy).")
+      .def_property_readonly(
+          "atom_names",
+          [](const PyStructure& s) { return label_column(*s.structure, [](auto& a) { return a.atom_name; }); },
+          "Atom names, e.g. 'CA', (N,) str (copy).")
+      .def_property_readonly(
+          "residue_names",
+          [](const PyStructure& s) { return label_column(*s.structure, [](auto& a) { return a.residue_name; }); },
+          "Residue names, e.g. 'ALA', (N,) str (copy).")
+      .def_property_readonly(
+          "residue_numbers",
+          [](const PyStructure& s) {
+            return atom_column<std::int32_t>(*s.structure, [](auto& a) { return a.residue_number; });
+          },
+          "Residue sequence numbers, (N,) int32 (copy).")
+      .def_property_readonly(
+          "insertion_codes",
+          [](const PyStructure& s) {
+            return label_column(*s.structure, [](auto& a) { return icode_text(a.insertion_code); });
+          },
+          "Insertion codes ('' when blank), (N,) str (copy).")
+      .def_property_readonly(
+          "chains", [](const PyStructure& s) { return label_column(*s.structure, [](auto& a) { return a.chain; }); },
+          "Chain names, (N,) str (copy).")
+      .def_property_readonly(
+          "serials",
+          [](const PyStructure& s) { return atom_column<std::int32_t>(*s.structure, [](auto& a) { return a.serial; }); },
+          "Atom serial numbers as in the file (0 where the format has none), (N,) int32 (copy).")
+      .def_property_readonly(
+          "hetero", [](const PyStructure& s) { return atom_column<bool>(*s.structure, [](auto& a) { return a.hetero; }); },
+          "Whether each atom is a hetero atom (ligand, ion, water), (N,) bool (copy).")
+      .def_property_readonly(
+          "occupancies",
+          [](const PyStructure& s) { return atom_column<double>(*s.structure, [](auto& a) { return a.occupancy; }); },
+          "Occupancies, (N,) float64 (copy).")
+      .def_property_readonly(
+          "b_factors",
+          [](const PyStructure& s) { return atom_column<double>(*s.structure, [](auto& a) { return a.b_factor; }); },
+          "B-factors, (N,) float64, A^2 (copy).")
+      .def_property_readonly(
+          "charges",
+          [](const PyStructure& s) { return atom_column<double>(*s.structure, [](auto& a) { return a.charge; }); },
+          "PQR partial charges (0 for other formats), (N,) float64, e (copy).")
+      .def_property_readonly(
+          "report", [](const PyStructure& s) { return read_report_dict(s.structure->report); },
+          "What the reader kept, dropped and guessed (dict): records, kept, dropped_water, dropped_hydrogen,\n"
+          "dropped_altloc, dropped_hetatm, dropped_chain, model_used, models_in_file, radius_set, ...")
+      .def("__repr__", [](const PyStructure& s) {
+        return "<molsurf.Structure " + s.structure->report.file.string() + ": " +
+               std::to_string(s.structure->atoms.size()) + " atoms>";
+      });
+
+  m.def("read_structure", &read_structure_py, "source"_a, py::kw_only(), "model"_a = py::none(), "chains"_a = py::none(),
+        "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true, "radius_set"_a = "protor",
+        "radius_file"_a = py::none(),
+        "read_structure(source, *, model=None, chains=None, keep_water=False, hydrogens=False, hetatm=True,\n"
+        "               radius_set='protor', radius_file=None) -> Structure\n\n"
+        "Reads atoms from a path: PDB (.pdb .ent), mmCIF (.cif .mmcif), either gzipped (.gz), PQR (.pqr,\n"
+        "radii from the file) or MSMS .xyzr; or from a gemmi.Structure in memory (no file written).\n"
+        "The command line's selection rules apply:\n"
+        "  model: model number as written in the file (default: the first);\n"
+        "  chains: chain names to keep, a list or 'A,C' (default: all);\n"
+        "  keep_water, hydrogens: keep waters / hydrogen and deuterium atoms (dropped by default);\n"
+        "  hetatm: keep ligands, ions and cofactors (default True);\n"
+        "  radius_set: 'protor' (default) or 'bondi'; radius_file: a user table overriding it.\n"
+        "One conformer per atom (blank altloc, or the highest occupancy). Raises molsurf.Error naming\n"
+        "file and line for unreadable input or an empty selection.");
+
+  // ---- Mesh and check ----
+  py::class_<molsurf::ComponentMeasure>(m, "Component",
+                                        "One connected part of a surface: the outer surface or a cavity.")
+      .def_readonly("faces", &molsurf::ComponentMeasure::faces, "Number of faces.")
+      .def_readonly("area", &molsurf::ComponentMeasure::area, "Area, A^2.")
+      .def_readonly("volume", &molsurf::ComponentMeasure::volume,
+                    "Signed volume, A^3: negative for a cavity (its faces point into it).")
+      .def_property_readonly("cavity", &molsurf::ComponentMeasure::cavity, "Whether this is a cavity.")
+      .def("__repr__", [](const molsurf::ComponentMeasure& c) {
+        return std::string("<molsurf.Component ") + (c.cavity() ? "cavity" : "outer") + ": " +
+               std::to_string(c.faces) + " faces, area " + std::to_string(c.area) + " A^2, volume " +
+               std::to_string(c.volume) + " A^3>";
+      });
+
+  py::class_<molsurf::Quality>(m, "Quality", "Triangle quality of a mesh.")
+      .def_readonly("min_angle_deg", &molsurf::Quality::min_angle_deg, "Smallest angle over all faces, degrees.")
+      .def_readonly("mean_min_angle_deg", &molsurf::Quality::mean_min_angle_deg,
+                    "Mean of each face's smallest angle, degrees.")
+      .def_readonly("max_aspect_ratio", &molsurf::Quality::max_aspect_ratio,
+                    "Largest longest-edge / (2 sqrt(3) inradius); 1 for an equilateral triangle.")
+      .def_readonly("below_1deg", &molsurf::Quality::below_1deg, "Faces whose smallest angle is below 1 degree.")
+      .def_readonly("below_5deg", &molsurf::Quality::below_5deg, "Faces whose smallest angle is below 5 degrees.")
+      .def_readonly("faces", &molsurf::Quality::faces, "Faces measured.")
+      .def("__repr__", [](const molsurf::Quality& q) {
+        return "<molsurf.Quality min angle " + std::to_string(q.min_angle_deg) + " deg, " +
+               std::to_string(q.below_5deg) + " of " + std::to_string(q.faces) + " faces under 5 deg>";
+      });
+
+  py::class_<molsurf::MeshCheck>(m, "Check",
+                                 "What molsurf check finds on a mesh; every decision exact. `valid` means closed,\n"
+                                 "2-manifold, oriented outward, no degenerate face, no self-intersection.")
+      .def_property_readonly("valid", &molsurf::MeshCheck::valid, "No defect (also true for an empty mesh).")
+      .def_property_readonly("empty", &molsurf::MeshCheck::empty, "No faces.")
+      .def_property_readonly("closed", &molsurf::MeshCheck::closed, "No boundary or non-manifold edge.")
+      .def_property_readonly("manifold", &molsurf::MeshCheck::manifold, "2-manifold at every edge and vertex.")
+      .def_property_readonly("oriented", &molsurf::MeshCheck::oriented, "Neighbouring faces agree on orientation.")
+      .def_property_readonly("defects", &molsurf::MeshCheck::defects, "One line per defect found (list of str).")
+      .def_readonly("vertices", &molsurf::MeshCheck::vertices)
+      .def_readonly("faces", &molsurf::MeshCheck::faces)
+      .def_readonly("edges", &molsurf::MeshCheck::edges)
+      .def_readonly("unused_vertices", &molsurf::MeshCheck::unused_vertices)
+      .def_readonly("boundary_edges", &molsurf::MeshCheck::boundary_edges, "Edges of one face: holes.")
+      .def_readonly("nonmanifold_edges", &molsurf::MeshCheck::nonmanifold_edges, "Edges of more than two faces.")
+      .def_readonly("misoriented_edges", &molsurf::MeshCheck::misoriented_edges)
+      .def_readonly("nonmanifold_vertices", &molsurf::MeshCheck::nonmanifold_vertices)
+      .def_readonly("degenerate_faces", &molsurf::MeshCheck::degenerate_faces)
+      .def_readonly("duplicate_faces", &molsurf::MeshCheck::duplicate_faces)
+      .def_readonly("intersecting_pairs", &molsurf::MeshCheck::intersecting_pairs, "Face pairs that cross.")
+      .def_readonly("contact_pairs", &molsurf::MeshCheck::contact_pairs, "Face pairs that only touch.")
+      .def_readonly("non_finite_vertices", &molsurf::MeshCheck::non_finite_vertices)
+      .def_readonly("self_intersections_checked", &molsurf::MeshCheck::self_intersections_checked)
+      .def_readonly("components", &molsurf::MeshCheck::components)
+      .def_readonly("inward_components", &molsurf::MeshCheck::inward_components)
+      .def_readonly("euler_characteristic", &molsurf::MeshCheck::euler_characteristic)
+      .def_readonly("area", &molsurf::MeshCheck::area, "A^2.")
+      .def_readonly("volume", &molsurf::MeshCheck::volume, "A^3.")
+      .def_readonly("quality", &molsurf::MeshCheck::quality)
+      .def(
+          "to_dict",
+          [](const molsurf::MeshCheck& c) {
+            return py::dict("valid"_a = c.valid(), "empty"_a = c.empty(), "closed"_a = c.closed(),
+                            "manifold"_a = c.manifold(), "oriented"_a = c.oriented(), "vertices"_a = c.vertices,
+                            "faces"_a = c.faces, "edges"_a = c.edges, "unused_vertices"_a = c.unused_vertices,
+                            "boundary_edges"_a = c.boundary_edges, "nonmanifold_edges"_a = c.nonmanifold_edges,
+                            "misoriented_edges"_a = c.misoriented_edges,
+                            "nonmanifold_vertices"_a = c.nonmanifold_vertices,
+                            "degenerate_faces"_a = c.degenerate_faces, "duplicate_faces"_a = c.duplicate_faces,
+                            "intersecting_pairs"_a = c.intersecting_pairs, "contact_pairs"_a = c.contact_pairs,
+                            "non_finite_vertices"_a = c.non_finite_vertices,
+                            "self_intersections_checked"_a = c.self_intersections_checked,
+                            "components"_a = c.components, "inward_components"_a = c.inward_components,
+                            "euler_characteristic"_a = c.euler_characteristic, "area"_a = c.area,
+                            "volume"_a = c.volume, "defects"_a = c.defects());
+          },
+          "The findings as a dict.")
+      .def("__repr__", [](const molsurf::MeshCheck& c) {
+        return std::string("<molsurf.Check ") + (c.valid() ? (c.empty() ? "empty" : "valid") : "invalid") + ": " +
+               std::to_string(c.faces) + " faces, " + std::to_string(c.defects().size()) + " defects>";
+      });
+
+  py::class_<PyMesh>(m, "Mesh",
+                     "An indexed triangle mesh, faces counter-clockwise seen from outside.\n"
+                     "Mesh(vertices, faces, tags=None) copies (V, 3) float coordinates (A), (F, 3) integer\n"
+                     "vertex indices and optional (F,) int32 face tags; the properties are read-only views.")
+      .def(py::init([](py::object vertices, py::object faces, py::object tags) {
+             return PyMesh{std::make_shared<const molsurf::Mesh>(mesh_from_arrays(vertices, faces, tags))};
+           }),
+           "vertices"_a, "faces"_a, "tags"_a = py::none())
+      .def_property_readonly(
+          "vertices", [](py::object self) { return vertices_view(*self.cast<const PyMesh&>().mesh, self); },
+          "(V, 3) float64, A: read-only view.")
+      .def_property_readonly(
+          "faces", [](py::object self) { return faces_view(*self.cast<const PyMesh&>().mesh, self); },
+          "(F, 3) int32 vertex indices, counter-clockwise from outside: read-only view.")
+      .def_property_readonly(
+          "tags", [](py::object self) { return tags_view(*self.cast<const PyMesh&>().mesh, self); },
+          "(F,) int32 face tags (atom index for a surface, the source face's tag after a Boolean; -1:\n"
+          "untagged): read-only view, or a fresh array of -1 for an untagged mesh.")
+      .def_property_readonly(
+          "area", [](const PyMesh& m) { return molsurf::surface_area(*m.mesh); }, "Total area, A^2.")
+      .def_property_readonly(
+          "volume", [](const PyMesh& m) { return molsurf::signed_volume(*m.mesh); },
+          "Signed enclosed volume, A^3 (positive for a closed outward mesh).")
+      .def(
+          "write",
+          [](const PyMesh& m, const std::filesystem::path& path, bool ascii) {
+            const std::vector<molsurf::OutputRequest> outputs{{path, "path", true}};
+            molsurf::check_output_paths({}, outputs);
+            molsurf::MeshWriteOptions options;
+            options.ascii = ascii;
+            options.msms_decimals = molsurf::kMsmsExact;
+            py::gil_scoped_release release;
+            molsurf::write_mesh(path, *m.mesh, options);
+          },
+          "path"_a, "ascii"_a = false,
+          "Writes the mesh; the format follows the extension: .vtp .vtk .ply .off .stl .obj .vert (MSMS\n"
+          ".vert/.face pair, exact coordinates) .msh (gmsh 2.2). ascii: text .ply/.stl. Atomic.")
+      .def("__repr__", [](const PyMesh& m) {
+        return "<molsurf.Mesh: " + std::to_string(m.mesh->vertex_count()) + " vertices, " +
+               std::to_string(m.mesh->face_count()) + " faces>";
+      });
+
+  m.def(
+      "read_mesh",
+      [](const std::filesystem::path& path) {
+        py::gil_scoped_release release;
+        return PyMesh{std::make_shared<const molsurf::Mesh>(molsurf::read_mesh(path))};
+      },
+      "path"_a,
+      "read_mesh(path) -> Mesh\n\n"
+      "Reads .stl (ASCII/binary) .off .ply .obj .vtk .vtp and MSMS .vert/.face; face tags are read back\n"
+      "when present. Raises molsurf.Error naming file and line.");
+
+  m.def(
+      "check",
+      [](py::object mesh_or_vertices, py::object faces, bool self_intersections) {
+        const auto mesh = faces.is_none()
+                              ? mesh_argument(mesh_or_vertices, "mesh")
+                              : std::make_shared<const molsurf::Mesh>(mesh_from_arrays(mesh_or_vertices, faces, py::none()));
+        molsurf::MeshCheckOptions options;
+        options.self_intersections = self_intersections;
+        py::gil_scoped_release release;
+        return molsurf::check_mesh(*mesh, options);
+      },
+      "mesh_or_vertices"_a, "faces"_a = py::none(), py::kw_only(), "self_intersections"_a = true,
+      "check(vertices, faces, *, self_intersections=True) -> Check\n"
+      "check(mesh) -> Check\n\n"
+      "The findings of `molsurf check` on a mesh given as (V, 3) vertices (A) and (F, 3) indices, or as a\n"
+      "Mesh: closed, manifold, oriented, outward, degenerate faces, exact self-intersections.");
+
+  m.def(
+      "boolean",
+      [](const std::string& op, py::object a, py::object b) {
+        const molsurf::BooleanOp operation = op == "union"          ? molsurf::BooleanOp::union_
+                                             : op == "intersection" ? molsurf::BooleanOp::intersection
+                                             : op == "difference"
+                                                 ? molsurf::BooleanOp::difference
+                                                 : throw Error("op: '" + op +
+                                                               "' is not union, intersection or difference");
+        const auto mesh_a = mesh_argument(a, "a");
+        const auto mesh_b = mesh_argument(b, "b");
+        py::gil_scoped_release release;
+        // The engine's contract, as `molsurf boolean` enforces it: valid closed operands.
+        for (const auto& [mesh, name] : {std::pair{mesh_a.get(), "a"}, std::pair{mesh_b.get(), "b"}}) {
+          const molsurf::MeshCheck check = molsurf::check_mesh(*mesh);
+          if (check.valid() && !check.empty()) continue;
+          std::string why = check.empty() ? "\n  - no faces" : "";
+          for (const std::string& defect : check.defects()) why += "\n  - " + defect;
+          throw Error(std::string(name) + ": not a valid closed surface, so no Boolean is defined:" + why);
+        }
+        return PyMesh{std::make_shared<const molsurf::Mesh>(molsurf::boolean(*mesh_a, *mesh_b, operation).mesh)};
+      },
+      "op"_a, "a"_a, "b"_a,
+      "boolean(op, a, b) -> Mesh\n\n"
+      "The exact union, intersection or difference (a minus b) of two closed meshes, each a Mesh or a\n"
+      "(vertices, faces) pair of arrays. Both must be valid closed surfaces (molsurf.check); the result\n"
+      "is one too (possibly empty). Face tags of the result are those of the source faces.");
+
+  // ---- Surface ----
+  py::class_<PySurface>(m, "Surface",
+                        "A solvent-accessible (or, with probe=0, van der Waals) surface: closed, 2-manifold,\n"
+                        "outward and checked. Geometry arrays are read-only views of the surface's memory.")
+      .def_property_readonly(
+          "vertices", [](py::object self) { return vertices_view(self.cast<const PySurface&>().data->computed.mesh, self); },
+          "(V, 3) float64 vertex coordinates, A: read-only view.")
+      .def_property_readonly(
+          "faces", [](py::object self) { return faces_view(self.cast<const PySurface&>().data->computed.mesh, self); },
+          "(F, 3) int32 vertex indices, counter-clockwise seen from outside: read-only view.")
+      .def_property_readonly(
+          "atom_of_face",
+          [](py::object self) { return tags_view(self.cast<const PySurface&>().data->computed.mesh, self); },
+          "(F,) int32: the index (into structure's atoms) of the atom whose sphere each face lies on:\n"
+          "read-only view.")
+      .def_property_readonly(
+          "mesh",
+          [](const PySurface& s) {
+            // Shares the surface's memory (aliasing pointer), no copy.
+            return PyMesh{std::shared_ptr<const molsurf::Mesh>(s.data, &s.data->computed.mesh)};
+          },
+          "The surface as a molsurf.Mesh (same memory, tags = atom_of_face).")
+      .def_property_readonly(
+          "structure", [](const PySurface& s) { return PyStructure{s.data->structure}; },
+          "The atoms the surface was computed from (molsurf.Structure).")
+      .def_property_readonly(
+          "area", [](const PySurface& s) { return s.data->computed.measures.area; },
+          "Total area, A^2 (outer surface and cavities).")
+      .def_property_readonly(
+          "volume", [](const PySurface& s) { return s.data->computed.measures.volume; },
+          "Enclosed volume, A^3: inside the outer surface minus the cavities.")
+      .def_property_readonly(
+          "components", [](const PySurface& s) { return s.data->computed.measures.components; },
+          "Connected parts (list of Component): the largest outer surface first, then by area; cavities\n"
+          "have negative volume.")
+      .def_property_readonly(
+          "area_per_atom",
+          [](py::object self) {
+            const std::vector<double>& area = self.cast<const PySurface&>().data->computed.measures.atom_area;
+            return read_only_view(area.data(), {static_cast<py::ssize_t>(area.size())}, self);
+          },
+          "(N,) float64, A^2: area of the faces on each atom's sphere; sums to area. Read-only view.")
+      .def_property_readonly(
+          "area_per_residue",
+          [](const PySurface& s) { return residue_table(*s.data->structure, s.data->computed.measures.atom_area); },
+          "Structured array (copy), one row per residue in order of first appearance, fields chain,\n"
+          "residue_name, residue_number, insertion_code ('' when blank), atoms, area (A^2).")
+      .def_property_readonly(
+          "quality", [](const PySurface& s) { return s.data->computed.quality_after; },
+          "Triangle quality of the surface (molsurf.Quality).")
+      .def_property_readonly(
+          "quality_before_cleanup", [](const PySurface& s) { return s.data->computed.quality_before; },
+          "Triangle quality of the union before the cleanup.")
+      .def_property_readonly(
+          "timings",
+          [](const PySurface& s) {
+            const molsurf::ComputeSurfaceTimings& t = s.data->computed.seconds;
+            return py::dict("union"_a = t.union_, "cleanup"_a = t.cleanup, "check"_a = t.check,
+                            "measures"_a = t.measures, "total"_a = t.total);
+          },
+          "Wall seconds per stage (dict): union, cleanup, check, measures, total.")
+      .def_property_readonly(
+          "check", [](const PySurface& s) { return s.data->computed.check; }, "The surface's check (molsurf.Check).")
+      .def_property_readonly(
+          "cleanup",
+          [](const PySurface& s) -> py::object {
+            if (!s.data->computed.cleanup) return py::none();
+            return cleanup_dict(*s.data->computed.cleanup);
+          },
+          "What the cleanup did (dict), or None with cleanup=False.")
+      .def_property_readonly(
+          "method", [](const PySurface& s) { return molsurf::surface_method_name(s.data->computed.method); },
+          "The method that made the surface: 'one-pass' or 'pairwise'.")
+      .def_property_readonly(
+          "notes", [](const PySurface& s) { return s.data->computed.notes; },
+          "Why the requested method's surface was replaced, one line each (list of str).")
+      .def_property_readonly(
+          "threads", [](const PySurface& s) { return s.data->computed.threads; }, "Threads used.")
+      .def(
+          "write",
+          [](const PySurface& s, const std::filesystem::path& path, bool ascii, int msms_decimals, bool msms_header) {
+            py::gil_scoped_release release;
+            return write_surface(*s.data, path, ascii, msms_decimals, msms_header);
+          },
+          "path"_a, py::kw_only(), "ascii"_a = false, "msms_decimals"_a = 3, "msms_header"_a = true,
+          "write(path, *, ascii=False, msms_decimals=3, msms_header=True) -> list of paths\n\n"
+          "Writes the surface as the command line does; the format follows the extension: .vtp .vtk .ply .off\n"
+          ".stl .obj .vert (MSMS .vert/.face pair) .msh (gmsh 2.2). Cell data carry each face's atom.\n"
+          "Lossy formats are checked as they will be held: MSMS decimals are raised (with a warning) where\n"
+          "3 would break the surface; an STL that float32 would break raises molsurf.Error. Atomic; returns\n"
+          "the files written (list of pathlib.Path).")
+      .def("__repr__", [](const PySurface& s) {
+        const molsurf::SurfaceMeasures& m = s.data->computed.measures;
+        return "<molsurf.Surface: " + std::to_string(m.faces) + " faces, area " + std::to_string(m.area) +
+               " A^2, volume " + std::to_string(m.volume) + " A^3>";
+      });
+
+  m.def("surface", &surface_py, "structure"_a = py::none(), py::kw_only(), "centres"_a = py::none(),
+        "radii"_a = py::none(), "probe"_a = 1.4, "density"_a = 2.0, "frequency"_a = py::none(),
+        "method"_a = "one-pass", "cleanup"_a = true, "outer_only"_a = false, "area_corrected"_a = true,
+        "check"_a = true, "threads"_a = 0, "max_faces"_a = molsurf::kDefaultMaxSphereFaces, "model"_a = py::none(),
+        "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
+        "radius_set"_a = "protor", "radius_file"_a = py::none(),
+        "surface(structure=None, *, centres=None, radii=None, probe=1.4, density=2.0, frequency=None,\n"
+        "        method='one-pass', cleanup=True, outer_only=False, area_corrected=True, check=True,\n"
+        "        threads=0, max_faces=300000000, model=None, chains=None, keep_water=False,\n"
+        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None) -> Surface\n\n"
+        "The surface of a structure, exactly as the molsurf command computes it (same defaults). The\n"
+        "structure is a path (str or os.PathLike; read with the selection keywords, as read_structure),\n"
+        "a molsurf.Structure, or a gemmi.Structure (no file written; selection keywords apply); or give\n"
+        "centres ((N, 3), A) and radii ((N,), A) instead.\n"
+        "  probe: probe radius added to every atom, A (0: van der Waals surface);\n"
+        "  density: icosphere vertices per A^2 of sphere; frequency: fixed icosphere frequency instead;\n"
+        "  method: 'one-pass' (default) or 'pairwise' (the reference); cleanup: remove slivers;\n"
+        "  outer_only: drop cavities; area_corrected: scale each icosphere to the sphere's area\n"
+        "  (False: inscribed); check: run the exact self-intersection test (closedness always is);\n"
+        "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs.\n"
+        "The GIL is released while it runs; Ctrl-C (KeyboardInterrupt) stops it at the next stage\n"
+        "(union, cleanup, check). Raises molsurf.Error for bad input.");
+}

@@ -1,0 +1,57 @@
+"""The examples under examples/ run, and what they write is checked against the library."""
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import molsurf
+
+
+def run_example(source_dir, name, cwd, *args):
+    # The example imports the molsurf module these tests import, from any working directory.
+    path = os.pathsep.join(filter(None, [os.path.dirname(molsurf.__file__), os.environ.get("PYTHONPATH")]))
+    run = subprocess.run([sys.executable, str(source_dir / "examples" / name), *map(str, args)], cwd=cwd,
+                         capture_output=True, text=True, env={**os.environ, "PYTHONPATH": path, "MPLBACKEND": "Agg"})
+    assert run.returncode == 0, run.stderr
+    return run.stdout
+
+
+def test_residue_sasa_over_nmr_models(source_dir, data_dir, tmp_path):
+    pytest.importorskip("matplotlib")
+    pytest.importorskip("gemmi")
+    # Six of the 20 models keep the test short; the example's default is all of them.
+    out = run_example(source_dir, "residue_sasa_nmr.py", tmp_path, "--models", 6)
+    assert "1j8k.cif: 6 models" in out
+    png = tmp_path / "1j8k_residue_sasa.png"
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    import matplotlib.image
+    assert matplotlib.image.imread(str(png)).shape[:2] == (400, 1000)
+    with open(tmp_path / "1j8k_residue_sasa.csv") as f:
+        rows = list(csv.DictReader(f))
+    model_1 = molsurf.surface(data_dir / "1j8k.cif").area_per_residue
+    assert len(rows) == len(model_1) > 80
+    for row, residue in zip(rows, model_1):
+        assert int(row["residue_number"]) == residue["residue_number"]
+        assert row["residue_name"] == residue["residue_name"]
+        # Model 1's area lies within the range over the models (printed to 4 decimals).
+        assert float(row["min_area"]) - 1e-4 <= residue["area"] <= float(row["max_area"]) + 1e-4
+        assert float(row["min_area"]) <= float(row["mean_area"]) <= float(row["max_area"])
+
+
+def test_surface_to_meshio_msh(source_dir, data_dir, tmp_path, crambin):
+    meshio = pytest.importorskip("meshio")
+    out = run_example(source_dir, "surface_to_meshio.py", tmp_path)
+    assert f"{len(crambin.faces)} triangles" in out
+    msh = tmp_path / "1crn.msh"
+    mesh = meshio.read(msh)
+    assert np.allclose(mesh.points, crambin.vertices, rtol=0, atol=1e-9)
+    triangles = mesh.cells_dict["triangle"]
+    assert np.array_equal(triangles, crambin.faces)
+    assert np.array_equal(mesh.cell_data_dict["gmsh:physical"]["triangle"], crambin.atom_of_face + 1)
+    # molsurf's own reader takes the file too, and it is still a valid closed surface.
+    back = molsurf.read_mesh(msh)
+    assert len(back.faces) == len(crambin.faces)
+    assert molsurf.check(back).valid
