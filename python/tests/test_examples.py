@@ -12,7 +12,8 @@ import molsurf
 
 def run_example(source_dir, name, cwd, *args):
     # The example imports the molsurf module these tests import, from any working directory.
-    path = os.pathsep.join(filter(None, [os.path.dirname(molsurf.__file__), os.environ.get("PYTHONPATH")]))
+    path = os.pathsep.join(filter(None, [os.path.dirname(os.path.abspath(molsurf.__file__)),
+                                         os.environ.get("PYTHONPATH")]))
     run = subprocess.run([sys.executable, str(source_dir / "examples" / name), *map(str, args)], cwd=cwd,
                          capture_output=True, text=True, env={**os.environ, "PYTHONPATH": path, "MPLBACKEND": "Agg"})
     assert run.returncode == 0, run.stderr
