@@ -1,6 +1,7 @@
 #pragma once
 // The cleanup's spatial index of faces: which faces lie near a box, while the faces change.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -35,15 +36,23 @@ class CleanupFaceGrid {
     inverse_cell_ = 1.0 / cell;
     const std::size_t cells = static_cast<std::size_t>(size_[0] * size_[1] * size_[2]);
     start_.assign(cells + 1, 0);
+    // Counting and filling in parallel: the order of a cell's faces depends on the
+    // threads, but a query's answer is a set (every caller's result is the same for any
+    // order of visits), so the cleanup's result does not.
     const auto nf = static_cast<std::int64_t>(m.faces.size());
 #pragma omp parallel for schedule(static)
-    for (std::int64_t f = 0; f < nf; ++f) box_[f] = bounding_box(m, static_cast<std::size_t>(f));
-    for (std::uint32_t f = 0; f < m.faces.size(); ++f) for_cells(box_[f], [&](std::uint64_t c) { ++start_[c + 1]; });
+    for (std::int64_t f = 0; f < nf; ++f) {
+      box_[f] = bounding_box(m, static_cast<std::size_t>(f));
+      for_cells(box_[f], [&](std::uint64_t c) { std::atomic_ref(start_[c + 1]).fetch_add(1, std::memory_order_relaxed); });
+    }
     for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
     flat_.resize(start_[cells]);
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t f = 0; f < m.faces.size(); ++f)
-      for_cells(box_[f], [&](std::uint64_t c) { flat_[fill[c]++] = f; });
+    std::vector<std::uint64_t> fill(start_.begin(), start_.end() - 1);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t f = 0; f < nf; ++f)
+      for_cells(box_[f], [&](std::uint64_t c) {
+        flat_[std::atomic_ref(fill[c]).fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(f);
+      });
   }
 
   // Before face f changes (or goes): its present cells forget it.
