@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "atom_fixtures.hpp"
 #include "boolean_invariants.hpp"
 #include "degenerate_placements.hpp"
 #include "molsurf/atoms.hpp"
@@ -101,6 +102,31 @@ INSTANTIATE_TEST_SUITE_P(Seeds, DegeneratePlacements,
                          ::testing::Combine(::testing::Values(testing::PlacementFamily::fine_grid,
                                                               testing::PlacementFamily::duplicates),
                                             ::testing::Range(0u, 20u)));
+
+// Three frequency-1 icospheres: m2's faces are coplanar with m0's, and m1 ∪ m2 has a
+// point rounded onto an edge of m2 that crosses an edge of m0 in that plane. The exact
+// Boolean of (m1 ∪ m2) and m0 then has a piece of m0 a rounding error high along one of
+// m0's edges; rounding folds it, and the repair must remove the fold without moving the
+// surface (collapsing the sliver's 0.3 Å short edge changes the volume by 0.46 Å³). The
+// union's volume must not depend on the order of the pairwise unions.
+TEST(CoplanarFaces, UnionOrderDoesNotChangeTheVolume) {
+  SphereOptions o;
+  o.frequency = 1;
+  o.probe = 1.4;
+  const Mesh m0 = atom_sphere(testing::atom_at({3.4, 0, 3.4}, 1.7), 0, o);
+  const Mesh m1 = atom_sphere(testing::atom_at({6.8, 0, 0}, 1.7), 1, o);
+  const Mesh m2 = atom_sphere(testing::atom_at({6.8, 0, 3.4}, 1.7), 2, o);
+  const double reference =
+      signed_volume(boolean(boolean(m0, m2, BooleanOp::union_).mesh, m1, BooleanOp::union_).mesh);
+  const Mesh a = boolean(m1, m2, BooleanOp::union_).mesh;
+  for (const bool a_first : {true, false}) {
+    const BooleanResult u = a_first ? boolean(a, m0, BooleanOp::union_) : boolean(m0, a, BooleanOp::union_);
+    EXPECT_TRUE(testing::valid_surface(u.mesh)) << (a_first ? "(m1 u m2) u m0" : "m0 u (m1 u m2)");
+    EXPECT_NEAR(signed_volume(u.mesh), reference, 1e-9 * reference) << (a_first ? "(m1 u m2) u m0" : "m0 u (m1 u m2)");
+  }
+  testing::expect_boolean_invariants(a, m0, "(m1 u m2) and m0");
+  testing::expect_boolean_invariants(m0, a, "m0 and (m1 u m2)");
+}
 
 }  // namespace
 }  // namespace molsurf

@@ -4,7 +4,6 @@
 
 #include <string>
 
-#include "atom_fixtures.hpp"
 #include "boolean_invariants.hpp"
 #include "degenerate_placements.hpp"
 #include "molsurf/boolean.hpp"
@@ -39,23 +38,6 @@ TEST_P(ManyDegeneratePlacements, BothMethodsValidAndEqual) {
 INSTANTIATE_TEST_SUITE_P(Seeds, ManyDegeneratePlacements,
                          ::testing::Combine(::testing::ValuesIn(testing::kAllPlacementFamilies),
                                             ::testing::Range(1000u, 1100u)));
-
-// The smallest case of the coplanar-face defect (docs/boolean.md): the union of three
-// icospheres must not depend on the order of the pairwise unions. The volume is the one
-// every other order, the one-pass union and a Monte Carlo estimate agree on.
-TEST(CoplanarFaces, UnionOrderDoesNotChangeTheVolume) {
-  SphereOptions o;
-  o.frequency = 1;
-  o.probe = 1.4;
-  const Mesh m0 = atom_sphere(testing::atom_at({3.4, 0, 3.4}, 1.7), 0, o);
-  const Mesh m1 = atom_sphere(testing::atom_at({6.8, 0, 0}, 1.7), 1, o);
-  const Mesh m2 = atom_sphere(testing::atom_at({6.8, 0, 3.4}, 1.7), 2, o);
-  const double reference = signed_volume(boolean(boolean(m0, m2, BooleanOp::union_).mesh, m1, BooleanOp::union_).mesh);
-  const Mesh a = boolean(m1, m2, BooleanOp::union_).mesh;
-  const double volume = signed_volume(boolean(a, m0, BooleanOp::union_).mesh);
-  EXPECT_NEAR(volume, reference, 1e-9 * reference);
-  testing::expect_boolean_invariants(a, m0, "(m1 u m2) and m0");
-}
 
 }  // namespace
 }  // namespace molsurf

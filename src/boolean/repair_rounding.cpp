@@ -121,7 +121,7 @@ class Repairer {
         const Triangle& t = m_.faces[f];
         if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
         if (!may_turn_over(m_, t)) continue;  // rounding (~1e-16) cannot turn it over
-        if (crosses_a_neighbour(f)) changed |= unfold(f);
+        if (crosses_a_neighbour(f) || across_longest_edge_crosses(f)) changed |= unfold(f, rounded);
       }
       if (!changed) break;
     }
@@ -231,10 +231,20 @@ class Repairer {
   }
 
 
-  // Collapses an edge of face f, shortest first, when the faces then around the kept
-  // vertex turn none over and cross nothing around them (exact).
-  bool unfold(std::uint32_t f) {
+  // Removes the fold at face f. A folded face is a sliver or a tiny face: its corner
+  // opposite the longest edge is within a rounding error of that edge. Flipping that edge
+  // with the neighbouring face moves no vertex and changes the surface by the fold's own
+  // height, so it is tried first. Only then an edge of f is collapsed, shortest first,
+  // when the faces then around the kept vertex turn none over and cross nothing around
+  // them (exact); a collapse moves a vertex by the edge's length, which on a sliver whose
+  // short edge is not tiny (a rounded point an ulp from an edge of the other operand,
+  // where one of its faces is nearly coplanar with a face of this one) would move the
+  // surface by far more than rounding did.
+  bool unfold(std::uint32_t f, const std::vector<std::uint8_t>& rounded) {
     const Triangle t = m_.faces[f];
+    for (Index v : t)
+      if (rounded[v] && checked_nudge(v)) return true;
+    if (checked_flip_longest_edge(f)) return true;
     std::array<std::pair<double, int>, 3> edges;
     for (int i = 0; i < 3; ++i) edges[i] = {norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]), i};
     std::sort(edges.begin(), edges.end());
@@ -243,6 +253,94 @@ class Repairer {
         const Index u = keep_first ? t[i] : t[(i + 1) % 3], v = keep_first ? t[(i + 1) % 3] : t[i];
         if (checked_collapse(u, v)) return true;
       }
+    return false;
+  }
+
+  // Moves rounded point v to one of the 26 doubles next to it (one ulp in some
+  // coordinates, in a fixed order) when that leaves fewer crossings around it, the fewest
+  // found; another rounding of the same exact point, so the surface moves by an ulp.
+  bool checked_nudge(Index v) {
+    if (!frozen_.empty() && frozen_[v]) return false;
+    const Vec3 original = m_.vertices[v];
+    const std::size_t before = crossings_around({v});
+    std::size_t best = before;
+    Vec3 best_position = original;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (int dx = -1; dx <= 1 && best > 0; ++dx)
+      for (int dy = -1; dy <= 1 && best > 0; ++dy)
+        for (int dz = -1; dz <= 1 && best > 0; ++dz) {
+          if (dx == 0 && dy == 0 && dz == 0) continue;
+          const int step[3] = {dx, dy, dz};
+          Vec3 moved = original;
+          for (int axis = 0; axis < 3; ++axis)
+            if (step[axis] != 0)
+              (axis == 0 ? moved.x : axis == 1 ? moved.y : moved.z) = std::nextafter(original[axis], step[axis] * inf);
+          m_.vertices[v] = moved;
+          bool flat = false;
+          if (const auto* around = find_faces(v))
+            for (std::uint32_t g : *around) flat |= alive_[g] && degenerate(m_, m_.faces[g]);
+          if (flat) continue;
+          if (const std::size_t count = crossings_around({v}); count < best) {
+            best = count;
+            best_position = moved;
+          }
+        }
+    m_.vertices[v] = best_position;
+    return best < before;
+  }
+
+  // The face across f's longest edge crosses a face sharing a corner with it. A folded
+  // sliver need not cross anything itself: its rounded corner can land a rounding error
+  // beyond the face across its longest edge, so that the faces around that corner cross
+  // that face instead (the sliver then lies turned over between them).
+  bool across_longest_edge_crosses(std::uint32_t f) const {
+    const auto [a, b, c] = longest_edge(m_.faces[f]);
+    (void)c;
+    const std::vector<std::uint32_t> around = faces_on_edge(a, b);
+    if (around.size() != 2) return false;
+    return crosses_a_neighbour(around[0] == f ? around[1] : around[0]);
+  }
+
+  // The corners a, b of t's longest edge and its opposite corner c.
+  std::array<Index, 3> longest_edge(const Triangle& t) const {
+    int longest = 0;
+    double length = -1;
+    for (int i = 0; i < 3; ++i)
+      if (const double l = norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]); l > length) {
+        length = l;
+        longest = i;
+      }
+    return {t[longest], t[(longest + 1) % 3], t[(longest + 2) % 3]};
+  }
+
+  // Flips the longest edge of f with the face across it when that leaves fewer crossings
+  // around the four corners than there were (exactly counted); otherwise changes nothing.
+  bool checked_flip_longest_edge(std::uint32_t f) {
+    const auto [a, b, c] = longest_edge(m_.faces[f]);
+    const std::vector<std::uint32_t> around = faces_on_edge(a, b);
+    if (around.size() != 2) return false;
+    const std::uint32_t g = around[0] == f ? around[1] : around[0];
+    Index d = a;
+    for (Index w : m_.faces[g])
+      if (w != a && w != b) d = w;
+    if (d == a || d == c || !faces_on_edge(c, d).empty()) return false;
+    if (geometry::collinear3d(m_.vertices[a], m_.vertices[c], m_.vertices[d]) ||
+        geometry::collinear3d(m_.vertices[b], m_.vertices[c], m_.vertices[d]))
+      return false;
+    const std::size_t before = crossings_around({a, b, c, d});
+    const Triangle old_f = m_.faces[f], old_g = m_.faces[g];
+    const auto first_new = static_cast<std::uint32_t>(m_.faces.size());
+    // No vertex moves and edge ab has both its faces here, so the open edges where
+    // passive faces join (at frozen vertices) stay as they are.
+    replace_by_flip(f, g, c, d);
+    if (crossings_around({a, b, c, d}) < before) return true;
+    for (std::uint32_t added = first_new; added < m_.faces.size(); ++added)
+      if (alive_[added]) kill(added);
+    for (auto [h, tri] : {std::pair{f, old_f}, std::pair{g, old_g}}) {
+      m_.faces[h] = tri;
+      alive_[h] = 1;
+      index_face(h);
+    }
     return false;
   }
 
@@ -327,17 +425,21 @@ class Repairer {
       if (w != a && w != b) d = w;
     if (!faces_on_edge(c, d).empty()) return false;
     if (touches_frozen({a, b, c, d})) return false;
-    // f runs a -> b (corner order c, a, b), so g runs b -> a: new faces (a, d, c), (d, b, c).
+    replace_by_flip(f, g, c, d);
+    return true;
+  }
+
+  // Faces f (corner c) and g (corner d) on edge ab become the two faces on edge cd.
+  void replace_by_flip(std::uint32_t f, std::uint32_t g, Index c, Index d) {
     const Triangle& tf = m_.faces[f];
     int k = 0;
     while (tf[k] != c) ++k;
-    const bool f_runs_a_to_b = tf[(k + 1) % 3] == a;
-    const Index from = f_runs_a_to_b ? a : b, to = f_runs_a_to_b ? b : a;
+    // f runs from -> to (corner order c, from, to), so g runs to -> from.
+    const Index from = tf[(k + 1) % 3], to = tf[(k + 2) % 3];
     kill(f);
     kill(g);
     add_face({from, d, c}, g);
     add_face({d, to, c}, g);
-    return true;
   }
 
   // Frozen vertices join faces outside this result: no repair may move, merge or re-link
