@@ -121,7 +121,7 @@ class Repairer {
         const Triangle& t = m_.faces[f];
         if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
         if (!may_turn_over(m_, t)) continue;  // rounding (~1e-16) cannot turn it over
-        if (crosses_a_neighbour(f) || across_longest_edge_crosses(f)) changed |= unfold(f, rounded);
+        if (crosses_a_neighbour(f)) changed |= unfold(f, rounded);
       }
       if (!changed) break;
     }
@@ -231,10 +231,11 @@ class Repairer {
   }
 
 
-  // Removes the fold at face f. A folded face is a sliver or a tiny face: its corner
-  // opposite the longest edge is within a rounding error of that edge. Flipping that edge
-  // with the neighbouring face moves no vertex and changes the surface by the fold's own
-  // height, so it is tried first. Only then an edge of f is collapsed, shortest first,
+  // Removes the fold at face f, by the smallest change that works. A folded face is a
+  // sliver or a tiny face: its corner opposite the longest edge is within a rounding error
+  // of that edge. Another rounding of a rounded corner moves the surface by an ulp;
+  // flipping the longest edge with the neighbouring face moves no vertex and changes the
+  // surface by the fold's own height. Only then an edge of f is collapsed, shortest first,
   // when the faces then around the kept vertex turn none over and cross nothing around
   // them (exact); a collapse moves a vertex by the edge's length, which on a sliver whose
   // short edge is not tiny (a rounded point an ulp from an edge of the other operand,
@@ -287,18 +288,6 @@ class Repairer {
         }
     m_.vertices[v] = best_position;
     return best < before;
-  }
-
-  // The face across f's longest edge crosses a face sharing a corner with it. A folded
-  // sliver need not cross anything itself: its rounded corner can land a rounding error
-  // beyond the face across its longest edge, so that the faces around that corner cross
-  // that face instead (the sliver then lies turned over between them).
-  bool across_longest_edge_crosses(std::uint32_t f) const {
-    const auto [a, b, c] = longest_edge(m_.faces[f]);
-    (void)c;
-    const std::vector<std::uint32_t> around = faces_on_edge(a, b);
-    if (around.size() != 2) return false;
-    return crosses_a_neighbour(around[0] == f ? around[1] : around[0]);
   }
 
   // The corners a, b of t's longest edge and its opposite corner c.

@@ -8,10 +8,9 @@
 //    so the mesh stays a 2-manifold;
 //  - a face whose corner lies strictly inside the opposite edge is removed by flipping that
 //    edge with the neighbouring face, whose plane both new faces then share;
-//  - a sliver or tiny face with a rounded corner is folded when it, or the face across its
-//    longest edge, crosses a face sharing a corner with it (two points an ulp or so apart,
-//    joined by an edge, or a point a rounding error from an edge of a nearly coplanar
-//    face). The fold is removed by the smallest change that leaves fewer exact crossings:
+//  - a sliver or tiny face with a rounded corner is folded when it crosses a face sharing
+//    a corner with it (two points an ulp or so apart, joined by an edge, or a point a
+//    rounding error from an edge of a nearly coplanar face). The fold is removed by the smallest change that leaves fewer exact crossings:
 //    the rounded corner moved to a neighbouring double, else the longest edge flipped,
 //    else the shortest edge that can be collapsed with the link condition, no face turned
 //    over and no crossing left around the kept vertex (all exact).
