@@ -85,8 +85,11 @@ struct Quality {
   std::size_t below_5deg = 0;
   std::size_t faces = 0;
 };
-// The smallest angle of triangle abc in degrees: the one opposite its shortest edge (law
-// of sines), from atan2 of |u x w| and u.w, accurate for tiny and near-straight angles.
+// The two edges (u, w) leaving the corner of triangle abc opposite its shortest edge: the
+// corner of its smallest angle (law of sines).
+std::array<Vec3, 2> smallest_angle_edges(const Vec3& a, const Vec3& b, const Vec3& c);
+// The smallest angle of triangle abc in degrees, from atan2 of |u x w| and u.w of those
+// edges: accurate for tiny and near-straight angles.
 double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
 double min_angle_deg(const Mesh& mesh, std::size_t face);
 double aspect_ratio(const Mesh& mesh, std::size_t face);

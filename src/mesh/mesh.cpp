@@ -133,20 +133,16 @@ long euler_characteristic(const Mesh& mesh) {
          static_cast<long>(mesh.faces.size());
 }
 
-double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+std::array<Vec3, 2> smallest_angle_edges(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, bc = c - b, ca = a - c;
   const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
-  Vec3 u, w;  // the two edges leaving the corner opposite the shortest edge
-  if (lab <= lbc && lab <= lca) {
-    u = a - c;
-    w = b - c;
-  } else if (lbc <= lca) {
-    u = b - a;
-    w = c - a;
-  } else {
-    u = c - b;
-    w = a - b;
-  }
+  if (lab <= lbc && lab <= lca) return {a - c, b - c};
+  if (lbc <= lca) return {b - a, c - a};
+  return {c - b, a - b};
+}
+
+double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const auto [u, w] = smallest_angle_edges(a, b, c);
   return std::min(180.0, std::atan2(norm(cross(u, w)), dot(u, w)) * 180.0 / std::numbers::pi);
 }
 

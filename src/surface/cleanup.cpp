@@ -149,19 +149,7 @@ class Cleaner {
   bool surely_at_least(std::uint32_t f, double tan_angle) const {
     const Triangle& t = m_.faces[f];
     const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
-    const Vec3 ab = b - a, bc = c - b, ca = a - c;
-    const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
-    Vec3 u, w;  // the two edges leaving the corner opposite the shortest edge
-    if (lab <= lbc && lab <= lca) {
-      u = a - c;
-      w = b - c;
-    } else if (lbc <= lca) {
-      u = b - a;
-      w = c - a;
-    } else {
-      u = c - b;
-      w = a - b;
-    }
+    const auto [u, w] = smallest_angle_edges(a, b, c);
     const double sine = norm(cross(u, w)), cosine = dot(u, w);  // both times |u| |w|
     return sine > 0 && (cosine <= 0 || sine >= cosine * tan_angle);
   }
