@@ -35,6 +35,8 @@
 #include <stdexcept>
 #include <cstdint>
 #include <numeric>
+#include <optional>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -310,8 +312,10 @@ bool box_contains(const BoundingBox& outer, const BoundingBox& inner) {
          inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
 }
 
-// `tree` holds the faces that are not degenerate (a degenerate face meets no ray).
-void check_components(const Mesh& mesh, const geometry::BoxBvh& tree, MeshCheck& result) {
+// `face_tree()` gives the tree of the faces that are not degenerate (a degenerate face
+// meets no ray), built on first use: a mesh without nested components needs none.
+void check_components(const Mesh& mesh, const std::function<const geometry::BoxBvh&()>& face_tree,
+                      MeshCheck& result) {
   const Components components = connected_components(mesh);
   result.components = components.count;
   std::vector<BoundingBox> box(components.count);
@@ -352,13 +356,14 @@ void check_components(const Mesh& mesh, const geometry::BoxBvh& tree, MeshCheck&
     std::size_t depth = 0;
     for (const std::uint32_t d : around) pending[d] = 1;
     std::size_t undecided = around.size();
+    const geometry::BoxBvh* tree = undecided > 0 ? &face_tree() : nullptr;
     for (std::size_t k = 0; k < faces_of[c].size() && undecided > 0; ++k) {
       const Vec3& x = mesh.vertices[mesh.faces[faces_of[c][k]][0]];
       for (const std::uint32_t d : around) parity[d] = contact[d] = 0;
       BoundingBox ray;
       ray.min = x;
       ray.max = {std::max(max_x, x.x), x.y, x.z};
-      tree.for_each_overlap(ray, [&](std::uint32_t g) {
+      tree->for_each_overlap(ray, [&](std::uint32_t g) {
         const std::uint32_t d = components.face_component[g];
         if (!pending[d]) return;
         const Triangle& t = mesh.faces[g];
@@ -479,11 +484,18 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
     return result;
   }
   {
-    std::vector<std::uint8_t> testable(nf);
-    for (std::size_t f = 0; f < nf; ++f) testable[f] = !degenerate[f];
-    const geometry::BoxBvh tree = geometry::BoxBvh::for_faces(mesh, testable);
-    if (options.self_intersections) check_self_intersections(mesh, tree, options.max_examples, result);
-    check_components(mesh, tree, result);
+    // One tree of the faces that are not degenerate, for both tests, built when needed.
+    std::optional<geometry::BoxBvh> tree;
+    const std::function<const geometry::BoxBvh&()> face_tree = [&]() -> const geometry::BoxBvh& {
+      if (!tree) {
+        std::vector<std::uint8_t> testable(nf);
+        for (std::size_t f = 0; f < nf; ++f) testable[f] = !degenerate[f];
+        tree.emplace(geometry::BoxBvh::for_faces(mesh, testable));
+      }
+      return *tree;
+    };
+    if (options.self_intersections) check_self_intersections(mesh, face_tree(), options.max_examples, result);
+    check_components(mesh, face_tree, result);
   }
 
   result.area = surface_area(mesh);
