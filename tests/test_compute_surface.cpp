@@ -188,5 +188,65 @@ TEST(ComputeSurface, TooManySphereFacesAreRefusedBeforeAnySphereIsBuilt) {
   }
 }
 
+// The estimate trims a sample of atoms as the pass does: on structures of different sizes
+// and at both probes it must land near the union's real face count.
+TEST(SurfaceSizeEstimate, IsNearTheUnionsFaceCount) {
+  const Structure haemoglobin = read_structure(kData + "/pdb/2hhb.pdb");
+  for (const Structure* s : {&crambin(), &haemoglobin})
+    for (double probe : {0.0, 1.4}) {
+      SurfaceOptions options;
+      options.spheres.probe = probe;
+      std::vector<SurfaceSizeEstimate> seen;
+      options.check_size = [&seen](const SurfaceSizeEstimate& e) { seen.push_back(e); };
+      const Mesh mesh = solvent_accessible_surface(s->atoms, options).mesh;
+      ASSERT_EQ(seen.size(), 1u);
+      const SurfaceSizeEstimate& e = seen.front();
+      EXPECT_EQ(e.atoms, s->atoms.size());
+      EXPECT_EQ(e.sampled_atoms, std::min<std::size_t>(s->atoms.size(), 256));
+      const double faces = static_cast<double>(mesh.face_count());
+      EXPECT_NEAR(static_cast<double>(e.faces), faces, 0.15 * faces) << s->atoms.size() << " atoms, probe " << probe;
+      EXPECT_EQ(e.bytes, e.faces * kBytesPerSurfaceFace);
+    }
+}
+
+TEST(SurfaceSizeEstimate, IsSkippedWhenTheSpheresAreFew) {
+  SurfaceOptions options;
+  bool called = false;
+  options.check_size = [&called](const SurfaceSizeEstimate&) { called = true; };
+  options.estimate_size_above = 1'000'000'000;
+  solvent_accessible_surface(crambin().atoms, options);
+  EXPECT_FALSE(called);
+  options.estimate_size_above = 1000;
+  solvent_accessible_surface(crambin().atoms, options);
+  EXPECT_TRUE(called);
+}
+
+TEST(ComputeSurface, ASurfaceTooLargeForTheMemoryLimitIsRefusedBeforeThePass) {
+  ComputeSurfaceOptions options;
+  options.max_memory = 1'000'000;  // crambin's 24 000 faces need about 9 MB
+  options.source = "crambin.pdb";
+  bool union_ran = false;
+  options.progress = [&union_ran](SurfaceStage stage, std::size_t done, std::size_t) {
+    if (stage == SurfaceStage::union_ && done > 0) union_ran = true;
+  };
+  try {
+    compute_surface(crambin().atoms, options);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("crambin.pdb: ", 0), 0u) << message;
+    EXPECT_NE(message.find("--max-memory"), std::string::npos) << message;
+    EXPECT_NE(message.find("of 327 atoms"), std::string::npos) << message;
+  }
+  EXPECT_FALSE(union_ran);
+  options.max_memory = 100'000'000;
+  EXPECT_NO_THROW(compute_surface(crambin().atoms, options));
+}
+
+TEST(AvailableMemory, IsPositiveAndAtMostThePhysicalMemory) {
+  const std::uint64_t bytes = available_memory_bytes();
+  EXPECT_GT(bytes, 100'000'000u);
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -45,6 +45,10 @@ struct ComputeSurfaceOptions {
   // Refuse, before any sphere is built, spheres with more faces than this in all
   // (check_sphere_resources); `source` names the input in that message.
   std::uint64_t max_sphere_faces = kDefaultMaxSphereFaces;
+  // Refuse, before the one-pass union, a surface whose estimated memory
+  // (check_surface_memory) is above this many bytes. 0: the memory this process may use
+  // (available_memory_bytes); the maximum of std::uint64_t: no limit.
+  std::uint64_t max_memory = 0;
   std::filesystem::path source = "atoms";
   // Called as the work advances with (stage, done, total), from one thread at a time but
   // not always the caller's (the pairwise union reports from its worker threads). The

@@ -23,6 +23,21 @@ inline constexpr std::uint64_t kDefaultMaxSphereFaces = 300'000'000;
 // anyone needs.
 inline constexpr std::uint64_t kMaxFacesPerSphere = 20 * 200 * 200;
 
+// The whole job's peak memory (union, cleanup, check, write) per face of the union before
+// cleanup, as resident memory over those faces: 2btv at probe 0, density 4 (22.9 M faces,
+// 6.9 GB) and the capsid at the defaults give about 300 bytes (docs/performance.md);
+// rounded up.
+inline constexpr std::uint64_t kBytesPerSurfaceFace = 360;
+
+// The memory this process may use: the machine's physical memory, or its control group's
+// limit (cgroup v2 memory.max) when that is lower.
+std::uint64_t available_memory_bytes();
+
+// Throws molsurf::Error naming `input` when the estimate exceeds `max_bytes` (the message
+// gives the faces, the memory, and the flags that lower the size or raise the limit).
+void check_surface_memory(const std::filesystem::path& input, const SurfaceSizeEstimate& estimate,
+                          std::uint64_t max_bytes);
+
 struct ResourceEstimate {
   std::uint64_t sphere_faces = 0;    // all icospheres' faces, saturating (never wraps)
   std::uint64_t largest_sphere = 0;  // faces of the largest one

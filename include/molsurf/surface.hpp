@@ -63,6 +63,16 @@ enum class SurfaceMethod {
 };
 const char* surface_method_name(SurfaceMethod method);
 
+// The union's size before it is computed, from a sample of atoms trimmed on their own
+// (the one-pass method; SurfaceOptions::check_size). bytes: the whole job's peak memory,
+// faces x kBytesPerSurfaceFace (resource_limits.hpp).
+struct SurfaceSizeEstimate {
+  std::uint64_t faces = 0;  // of the union before cleanup, extrapolated from the sample
+  std::uint64_t bytes = 0;
+  std::size_t sampled_atoms = 0;
+  std::size_t atoms = 0;
+};
+
 struct SurfaceOptions {
   SphereOptions spheres;
   SurfaceMethod method = SurfaceMethod::one_pass;
@@ -70,6 +80,12 @@ struct SurfaceOptions {
   // Called from one thread as the work advances: (atoms trimmed, atoms) for the one-pass
   // method, (merges done, merges in all) after each level for the pairwise one; may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
+  // Called once by the one-pass method before its pass, when the spheres have more than
+  // `estimate_size_above` faces, with the union's size estimated from a sample of atoms
+  // trimmed on their own (a fraction of a percent of the pass); it may throw to stop the
+  // job before the memory is spent. May be empty.
+  std::function<void(const SurfaceSizeEstimate&)> check_size;
+  std::uint64_t estimate_size_above = 0;
 };
 
 struct SurfaceTimings {  // seconds

@@ -48,6 +48,14 @@ class Pipeline {
       surface_options.progress = [this](std::size_t done, std::size_t total) {
         options_.progress(SurfaceStage::union_, done, total);
       };
+    // A surface that cannot fit is refused before its memory is spent: the estimate is
+    // sampled only when the spheres could make one that large (two output faces for every
+    // sphere face is far above any protein's union: 2btv at probe 0, density 4, has 0.65).
+    const std::uint64_t max_memory = options_.max_memory > 0 ? options_.max_memory : available_memory_bytes();
+    surface_options.estimate_size_above = max_memory / (2 * kBytesPerSurfaceFace);
+    surface_options.check_size = [this, max_memory](const SurfaceSizeEstimate& estimate) {
+      check_surface_memory(options_.source, estimate, max_memory);
+    };
     SurfaceResult sas = solvent_accessible_surface(atoms_, surface_options);
     if (!sas.fallback.empty()) notes_.push_back(sas.fallback);
     attempt.method = sas.method;

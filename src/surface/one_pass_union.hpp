@@ -16,6 +16,7 @@
 // atom lies in the plane of another's with the same orientation, the lower index keeps
 // the shared part; with opposite orientations (solids face to face) both go.
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <string>
@@ -32,7 +33,12 @@ struct OnePassResult {
 };
 
 // `progress` (may be empty) is called from one thread with (atoms done, atoms in all).
+// `check_size` (may be empty) is called before the pass with the union's size estimated from
+// a sample of atoms, when the spheres have more than `estimate_size_above` faces; it may
+// throw to stop before the memory is spent.
 OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
-                             const std::function<void(std::size_t, std::size_t)>& progress = {});
+                             const std::function<void(std::size_t, std::size_t)>& progress = {},
+                             const std::function<void(const SurfaceSizeEstimate&)>& check_size = {},
+                             std::uint64_t estimate_size_above = 0);
 
 }  // namespace molsurf::surface_detail

@@ -139,7 +139,8 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   // spinning workers on every core).
   const ThreadCountScope thread_count(threads);
   if (options.method == SurfaceMethod::one_pass) {
-    surface_detail::OnePassResult one_pass = surface_detail::one_pass_union(atoms, options.spheres, threads, options.progress);
+    surface_detail::OnePassResult one_pass = surface_detail::one_pass_union(atoms, options.spheres, threads, options.progress,
+                                                                             options.check_size, options.estimate_size_above);
     result.one_pass = one_pass.stats;
     if (one_pass.stats.open_edges == 0) {
       result.mesh = std::move(one_pass.mesh);

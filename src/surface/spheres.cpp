@@ -1,10 +1,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include <unistd.h>
 
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
@@ -137,6 +140,26 @@ void check_sphere_resources(const std::filesystem::path& input, std::span<const 
     fail(input, "the spheres would have " + count(estimate.sphere_faces) + " faces before the union with " + how +
                     " (about " + gigabytes(estimate.bytes) + " of memory), more than the limit of " +
                     count(max_faces) + "; lower --density or use --frequency, or raise the limit with --max-faces");
+}
+
+std::uint64_t available_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  std::uint64_t bytes = pages > 0 && page_size > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size)
+                                                    : std::numeric_limits<std::uint64_t>::max();
+  // A container's limit ("max" when there is none) is what the kernel enforces.
+  std::ifstream cgroup("/sys/fs/cgroup/memory.max");
+  unsigned long long limit = 0;
+  if (cgroup >> limit && limit > 0) bytes = std::min<std::uint64_t>(bytes, limit);
+  return bytes;
+}
+
+void check_surface_memory(const std::filesystem::path& input, const SurfaceSizeEstimate& estimate,
+                          std::uint64_t max_bytes) {
+  if (estimate.bytes <= max_bytes) return;
+  fail(input, "the surface would have about " + count(estimate.faces) + " faces before cleanup (estimated from " +
+                  std::to_string(estimate.sampled_atoms) + " of " + std::to_string(estimate.atoms) +
+                  " atoms) and need about " + gigabytes(estimate.bytes) + " of memory, more than the limit of " +
+                  gigabytes(max_bytes) + "; lower --density, or raise the limit with --max-memory");
 }
 
 }  // namespace molsurf
