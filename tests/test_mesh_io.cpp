@@ -7,6 +7,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+#include <tuple>
 #include <random>
 #include <sstream>
 #include <string>
@@ -350,8 +354,12 @@ TEST_F(MeshIoTest, TagThatIsNoAtomIsRefused) {
 
 TEST_F(MeshIoTest, MsmsPairHasMsmsLayout) {
   const Mesh mesh = tagged_sphere();
-  const std::vector<Atom> atoms = three_atoms();
-  write_mesh(dir_ / "surf.vert", mesh, {.atoms = atoms, .probe_radius = 1.5, .density = 3.0});
+  std::vector<Atom> atoms = three_atoms();
+  atoms[1].atom_name = "CA";
+  atoms[2].insertion_code = 'B';
+  MeshWriteOptions options{.atoms = atoms, .probe_radius = 1.5, .density = 3.0};
+  options.surface_description = "test surface\nfor x";
+  write_mesh(dir_ / "surf.vert", mesh, options);
   ASSERT_TRUE(fs::exists(dir_ / "surf.face"));
   std::istringstream vert(slurp(dir_ / "surf.vert"));
   std::string comment, legend, counts, first;
@@ -359,17 +367,22 @@ TEST_F(MeshIoTest, MsmsPairHasMsmsLayout) {
   std::getline(vert, legend);
   std::getline(vert, counts);
   std::getline(vert, first);
-  EXPECT_EQ(comment.front(), '#');
+  // The first line names the surface (on one line, whatever the description holds).
+  EXPECT_EQ(comment.rfind("# MSMS-format vertices of the test surface for x (molsurf ", 0), 0u) << comment;
   EXPECT_EQ(legend, "#vertex #sphere density probe_r");
   EXPECT_EQ(counts, "    162       3  3.00  1.50");
-  // x y z nx ny nz in %9.3f, then face number, closest sphere, type.
-  ASSERT_EQ(first.size(), 6 * 10 + 8 + 8 + 3 - 1) << first;
+  // x y z nx ny nz in %9.3f, then face number, closest sphere, type, then the atom name.
   std::istringstream fields(first);
   double x, y, z, nx, ny, nz;
   int face_number, sphere, type;
-  ASSERT_TRUE(fields >> x >> y >> z >> nx >> ny >> nz >> face_number >> sphere >> type);
+  std::string name, rest;
+  ASSERT_TRUE(fields >> x >> y >> z >> nx >> ny >> nz >> face_number >> sphere >> type >> name);
+  EXPECT_FALSE(fields >> rest);
+  EXPECT_EQ(first.substr(0, 6 * 10 + 8 + 8 + 3 - 1).find_first_not_of(" 0123456789.-"), std::string::npos) << first;
+  EXPECT_EQ(first[6 * 10 + 8 + 8 + 3 - 1], ' ');
   EXPECT_NEAR(x, mesh.vertices[0].x, kMsmsTolerance);
   EXPECT_NEAR(std::hypot(nx, ny, nz), 1.0, 0.003);
+  EXPECT_EQ(type, 3);  // MSMS's contact face: every face lies on an atom's sphere
   // The closest atom (|p - c| - r) among the atoms of the faces around vertex 0.
   double best = 1e300;
   int expected_sphere = 0;
@@ -381,12 +394,16 @@ TEST_F(MeshIoTest, MsmsPairHasMsmsLayout) {
     if (d < best) best = d, expected_sphere = mesh.face_tags[f] + 1;
   }
   EXPECT_EQ(sphere, expected_sphere);
+  // MaSIF's naming: CHAIN_RESNUM_INSERTION_RESNAME_ATOM, insertion "x" when blank.
+  const char* expected_names[] = {"A_7_x_ALA_", "B_14_x_GLY_CA", "AB_21_B_HEM_"};
+  EXPECT_EQ(name, expected_names[expected_sphere - 1]);
 
   std::istringstream face(slurp(dir_ / "surf.face"));
   std::getline(face, comment);
   std::getline(face, legend);
   std::getline(face, counts);
   std::getline(face, first);
+  EXPECT_EQ(comment.rfind("# MSMS-format faces of the test surface for x (molsurf ", 0), 0u) << comment;
   EXPECT_EQ(legend, "#faces  #sphere density probe_r");
   EXPECT_EQ(counts, "    320       3  3.00  1.50");
   std::istringstream face_fields(first);
@@ -394,17 +411,184 @@ TEST_F(MeshIoTest, MsmsPairHasMsmsLayout) {
   int analytic;
   ASSERT_TRUE(face_fields >> a >> b >> c >> type >> analytic);
   EXPECT_EQ((Triangle{a - 1, b - 1, c - 1}), mesh.faces[0]);
+  EXPECT_EQ(type, 3);
   EXPECT_EQ(analytic, mesh.face_tags[0] + 1);
 }
 
-TEST_F(MeshIoTest, MsmsWithoutHeaderHasOnlyDataLines) {
-  const Mesh mesh = tetrahedron();
-  write_mesh(dir_ / "plain.face", mesh, {.msms_header = false});
-  const std::string vert = slurp(dir_ / "plain.vert");
-  EXPECT_EQ(vert.find('#'), std::string::npos);
-  EXPECT_EQ(std::count(vert.begin(), vert.end(), '\n'), 4);
+// The .vert rows as whitespace-separated fields, after `header_lines` lines.
+std::vector<std::vector<std::string>> msms_rows(const std::string& text, int header_lines) {
+  std::istringstream in(text);
+  std::string line;
+  for (int i = 0; i < header_lines; ++i) std::getline(in, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    rows.emplace_back(std::istream_iterator<std::string>(fields), std::istream_iterator<std::string>());
+  }
+  return rows;
+}
+
+// MSMS's analytical face number of a vertex: its patch (tag + 1) inside one atom's patch,
+// minus the seam's number on a seam between two (seams numbered from 1 in order of their
+// first vertex), 0 where three or more meet.
+TEST_F(MeshIoTest, MsmsVertexFaceNumberFollowsPatchesAndSeams) {
+  Mesh mesh = make_icosphere({0, 0, 0}, 2.0, IcosphereOptions{.frequency = 6, .tag = 0});
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {  // three patches: x < 0, x >= 0 split by y
+    Vec3 c{};
+    for (Index v : mesh.faces[f]) c += mesh.vertices[v] / 3.0;
+    mesh.face_tags[f] = c.x < 0 ? 4 : (c.y < 0 ? 1 : 2);
+  }
+  write_mesh(dir_ / "p.vert", mesh, {.msms_header = false});
+  const auto rows = msms_rows(slurp(dir_ / "p.vert"), 0);
+  ASSERT_EQ(rows.size(), mesh.vertex_count());
+  std::vector<std::set<std::int32_t>> around(mesh.vertex_count());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (Index v : mesh.faces[f]) around[v].insert(mesh.face_tags[f]);
+  std::map<std::pair<std::int32_t, std::int32_t>, long long> seams;
+  std::size_t inside = 0, on_seams = 0, corners = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const long long written = std::stoll(rows[v].at(6));
+    const std::vector<std::int32_t> tags(around[v].begin(), around[v].end());
+    if (tags.size() == 1) {
+      EXPECT_EQ(written, tags[0] + 1) << "vertex " << v;
+      ++inside;
+    } else if (tags.size() == 2) {
+      const auto [it, added] = seams.try_emplace({tags[0], tags[1]}, static_cast<long long>(seams.size()) + 1);
+      EXPECT_EQ(written, -it->second) << "vertex " << v;
+      ++on_seams;
+    } else {
+      EXPECT_EQ(written, 0) << "vertex " << v;
+      ++corners;
+    }
+  }
+  EXPECT_GT(inside, 0u);
+  EXPECT_EQ(seams.size(), 3u);
+  EXPECT_GT(on_seams, 0u);
+  EXPECT_GT(corners, 0u);
+}
+
+// Inside an atom's patch the normal is the atom sphere's (the exact normal of the
+// surface there, not the polyhedron's); on a seam, the area-weighted mean of the faces
+// around. A surface turned inside out (a cavity written on its own) keeps its normals
+// on the side its faces point to.
+TEST_F(MeshIoTest, MsmsNormalsAreTheSpheresInsidePatches) {
+  std::vector<Atom> atoms = three_atoms();
+  atoms[0].centre = {0, 0, 0};
+  atoms[1].centre = {0.4, -0.3, 0.2};  // off the mesh's centre: its normals differ from the mesh's
+  Mesh mesh = make_icosphere({0, 0, 0}, 2.0, IcosphereOptions{.frequency = 5, .tag = 0});
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    Vec3 c{};
+    for (Index v : mesh.faces[f]) c += mesh.vertices[v] / 3.0;
+    mesh.face_tags[f] = c.z < 0.3 ? 0 : 1;
+  }
+  for (const bool turned : {false, true}) {
+    Mesh written_mesh = mesh;
+    if (turned)
+      for (Triangle& t : written_mesh.faces) std::swap(t[1], t[2]);
+    write_mesh(dir_ / "n.vert", written_mesh, {.atoms = atoms, .msms_header = false, .msms_atom_names = false});
+    const auto rows = msms_rows(slurp(dir_ / "n.vert"), 0);
+    ASSERT_EQ(rows.size(), mesh.vertex_count());
+    const std::vector<Vec3> mean = vertex_normals(written_mesh);
+    std::vector<std::set<std::int32_t>> around(mesh.vertex_count());
+    for (std::size_t f = 0; f < mesh.face_count(); ++f)
+      for (Index v : mesh.faces[f]) around[v].insert(mesh.face_tags[f]);
+    std::size_t radial_differs = 0, seam = 0;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+      ASSERT_EQ(rows[v].size(), 9u);
+      const Vec3 n{std::stod(rows[v][3]), std::stod(rows[v][4]), std::stod(rows[v][5])};
+      Vec3 expected = mean[v];
+      if (around[v].size() == 1) {
+        expected = normalized(mesh.vertices[v] - atoms[static_cast<std::size_t>(*around[v].begin())].centre);
+        if (turned) expected = expected * -1.0;
+        radial_differs += norm(expected - mean[v]) > 0.01;
+      } else {
+        ++seam;
+      }
+      EXPECT_LE(norm(n - expected), 0.001) << "vertex " << v << (turned ? " (turned)" : "");
+    }
+    EXPECT_GT(radial_differs, 20u);  // the test can tell the two rules apart
+    EXPECT_GT(seam, 0u);
+  }
+}
+
+// --no-header's layout: data rows only, every field a number, the same count on every
+// row, so a reader that loads the file as one numeric table (PyGBe: numpy.loadtxt) can.
+TEST_F(MeshIoTest, MsmsWithoutHeaderIsANumericTable) {
+  const Mesh mesh = tagged_sphere();
+  const std::vector<Atom> atoms = three_atoms();
+  write_mesh(dir_ / "plain.face", mesh, {.atoms = atoms, .msms_header = false, .msms_atom_names = false});
+  for (const auto& [file, columns, rows] : {std::tuple{"plain.vert", 9u, mesh.vertex_count()},
+                                            std::tuple{"plain.face", 5u, mesh.face_count()}}) {
+    const std::string text = slurp(dir_ / file);
+    EXPECT_EQ(text.find('#'), std::string::npos);
+    const auto table = msms_rows(text, 0);
+    ASSERT_EQ(table.size(), rows) << file;
+    for (const auto& row : table) {
+      ASSERT_EQ(row.size(), columns) << file;
+      for (const std::string& field : row) {
+        std::size_t used = 0;
+        std::stod(field, &used);
+        EXPECT_EQ(used, field.size()) << file << ": " << field;
+      }
+    }
+  }
   // Without atoms the closest sphere is the lowest tag + 1 around the vertex.
-  EXPECT_EQ(vert.substr(0, vert.find('\n')).substr(59, 16), "       0       1");
+  write_mesh(dir_ / "t.vert", tetrahedron(), {.msms_header = false});
+  const auto tetra = msms_rows(slurp(dir_ / "t.vert"), 0);
+  ASSERT_EQ(tetra.size(), 4u);
+  EXPECT_EQ(tetra[0][7], "1");
+}
+
+// TABI-PB reads MSMS-format files as its source does (src/elements.cpp, read from its
+// documented layout): two header lines thrown away, the count from the start of the
+// third (std::stoul), then x y z nx ny nz as the first six whitespace tokens of each row
+// (faces: the first three, 1-based). Its older Fortran reader also wants four numbers on
+// the count line (count, spheres, density, probe) and drops faces under 1e-5 A^2.
+TEST_F(MeshIoTest, MsmsReadsAsTabiPbReadsIt) {
+  const Mesh mesh = tagged_sphere();
+  const std::vector<Atom> atoms = three_atoms();
+  write_mesh(dir_ / "tabi.vert", mesh, {.atoms = atoms});
+  const auto read_pair = [&](const char* file, std::size_t& declared) {
+    std::istringstream in(slurp(dir_ / file));
+    std::string line;
+    std::getline(in, line);
+    std::getline(in, line);
+    std::getline(in, line);
+    declared = std::stoul(line);
+    std::istringstream counts(line);
+    double spheres = 0, density = 0, probe = 0;
+    std::size_t count = 0;
+    EXPECT_TRUE(counts >> count >> spheres >> density >> probe) << line;  // the Fortran reader's four
+    return msms_rows(in.str().substr(static_cast<std::size_t>(in.tellg())), 0);
+  };
+  std::size_t vertex_count = 0, face_count = 0;
+  const auto vertices = read_pair("tabi.vert", vertex_count);
+  const auto faces = read_pair("tabi.face", face_count);
+  ASSERT_EQ(vertex_count, mesh.vertex_count());
+  ASSERT_EQ(vertices.size(), vertex_count);
+  ASSERT_EQ(face_count, mesh.face_count());
+  ASSERT_EQ(faces.size(), face_count);
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    const Vec3 p{std::stod(vertices[v][0]), std::stod(vertices[v][1]), std::stod(vertices[v][2])};
+    const Vec3 n{std::stod(vertices[v][3]), std::stod(vertices[v][4]), std::stod(vertices[v][5])};
+    EXPECT_LE(norm(p - mesh.vertices[v]), 1e-3);
+    EXPECT_NEAR(norm(n), 1.0, 0.002);
+    EXPECT_GT(dot(n, vertex_normals(mesh)[v]), 0.9);  // outward
+  }
+  Mesh read;
+  for (const auto& row : vertices) read.vertices.push_back({std::stod(row[0]), std::stod(row[1]), std::stod(row[2])});
+  for (const auto& row : faces) {
+    Triangle t;
+    for (int k = 0; k < 3; ++k) {
+      const unsigned long index = std::stoul(row[static_cast<std::size_t>(k)]);
+      ASSERT_GE(index, 1u);
+      ASSERT_LE(index, vertex_count);
+      t[static_cast<std::size_t>(k)] = static_cast<Index>(index - 1);
+    }
+    read.faces.push_back(t);
+  }
+  for (std::size_t f = 0; f < read.face_count(); ++f) EXPECT_GE(face_area(read, f), 1e-5) << "face " << f;
+  EXPECT_NEAR(signed_volume(read), signed_volume(mesh), 0.01 * signed_volume(mesh));
 }
 
 TEST_F(MeshIoTest, MsmsFaceOutOfRange) {

@@ -25,6 +25,13 @@ struct MeshWriteOptions {
   std::span<const Atom> atoms;
   bool ascii = false;          // .ply (binary little-endian by default), .stl
   bool msms_header = true;     // MSMS .vert/.face 3-line headers
+  // MSMS .vert: the closest atom's name as a 10th column, as MSMS writes when its input
+  // names the atoms (MaSIF reads it); only when `atoms` are given and named. Readers that load the
+  // rows as a numeric table (PyGBe's numpy.loadtxt) need it off.
+  bool msms_atom_names = true;
+  // What the surface is, for the first line of the MSMS headers ("# MSMS-format vertices
+  // of the DESCRIPTION"), e.g. "solvent accessible surface for 1crn.pdb"; "surface" when empty.
+  std::string surface_description;
   // Decimals of MSMS .vert coordinates: 3 is MSMS's own "%9.3f"; kMsmsExact writes each
   // coordinate in the shortest fixed-point text that reads back as the same double.
   // Readers of .vert (MSMS tools, PyGBe, TABI-PB, MaSIF) split on whitespace, so wider

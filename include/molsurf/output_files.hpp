@@ -11,6 +11,7 @@
 
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
+#include "molsurf/mesh_check.hpp"
 
 namespace molsurf {
 
@@ -41,6 +42,11 @@ class OutputFiles {
 
   // Written to temporaries now; nothing replaces its target before commit().
   void add_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshWriteOptions& options);
+  // The same, for a mesh that has not been checked yet (a part of a checked surface, as
+  // --split-components writes): checked first as the file will hold it (check_mesh on
+  // mesh_as_written), and refused with molsurf::Error naming `path` unless valid.
+  void add_checked_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshWriteOptions& options,
+                        const MeshCheckOptions& check_options);
   void add_text(const std::filesystem::path& path, std::string content);  // "-": standard output
 
   // Replaces every target (then prints what goes to standard output) and returns the

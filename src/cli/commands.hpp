@@ -21,11 +21,13 @@ struct SurfaceCommand {
   int threads = 0;
   std::string method = "one-pass";
   bool outer_only = false;
+  bool split_components = false;  // one file per closed component
+  bool ascii = false;             // .ply and .stl as text
+  bool no_header = false;         // MSMS rows only: numbers, no header, no atom names
   bool skip_check = false;
   bool skip_cleanup = false;
   std::filesystem::path json, per_atom, per_residue;
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
-  double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;
   // Set by add_options: whether an option was given at all (an empty value, as in
   // `-o ""`, is then an error rather than the default).

@@ -15,6 +15,7 @@
 #include "molsurf/surface_report.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/resource_limits.hpp"
+#include "molsurf/split_components.hpp"
 #include "molsurf/written_check.hpp"
 #include "cli/validators.hpp"
 
@@ -73,11 +74,6 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->check(whole_number(1, 100'000'000'000))
       ->capture_default_str()
       ->group(sphere);
-  app.add_option("--max-memory", max_memory_gb,
-                 "Refuse to start the union when the surface would need more memory than this many GB\n"
-                 "(estimated from a sample of atoms, about 360 bytes per face); default: this machine's memory")
-      ->check(finite_number(0, 1e9, true))
-      ->group(sphere);
   app.add_flag("--inscribed", [this](std::int64_t) { spheres.area_corrected = false; },
                "Put icosphere vertices on the true spheres (inscribed polyhedra: about 1 % less volume).\n"
                "Default: each icosphere scaled so its area equals the sphere's (docs/accuracy.md)")
@@ -85,6 +81,16 @@ void SurfaceCommand::add_options(CLI::App& app) {
 
   auto* output_group = "Output and reports";
   app.add_flag("--outer-only", outer_only, "Keep the outer surface only, without cavities (as MSMS does by default)")
+      ->group(output_group);
+  app.add_flag("--split-components", split_components,
+               "One file per closed surface: NAME.outer.EXT and NAME.cavity-K.EXT (K from 1, largest cavity\n"
+               "first, as in the report) for -o NAME.EXT, each closed and outward on its own")
+      ->group(output_group);
+  app.add_flag("--ascii", ascii, "Write .ply and .stl as text (binary by default); tetgen needs ASCII PLY")
+      ->group(output_group);
+  app.add_flag("--no-header", no_header,
+               "MSMS .vert/.face: data rows only, all numeric (no header lines, no atom-name column),\n"
+               "as numpy.loadtxt readers such as PyGBe need")
       ->group(output_group);
   json_option = app.add_option("--json", json, "Write the report as JSON to this file ('-': standard output)")
                     ->group(output_group);
@@ -187,7 +193,6 @@ int SurfaceCommand::run() const {
   compute_options.cleanup = !skip_cleanup;
   compute_options.check_self_intersections = !skip_check;
   compute_options.max_sphere_faces = max_faces;
-  if (max_memory_gb > 0) compute_options.max_memory = static_cast<std::uint64_t>(max_memory_gb * 1e9);
   compute_options.source = structure;
   const ComputedSurface computed = [&] {
     try {
@@ -213,6 +218,11 @@ int SurfaceCommand::run() const {
   write_options.atoms = s.atoms;
   write_options.probe_radius = spheres.probe;
   write_options.density = spheres.density;
+  write_options.ascii = ascii;
+  write_options.msms_header = !no_header;
+  write_options.msms_atom_names = !no_header;
+  write_options.surface_description = std::string(spheres.probe > 0 ? "solvent accessible surface" : "van der Waals surface") +
+                                      " for " + structure.filename().string();
   MeshCheckOptions check_options;
   check_options.self_intersections = !skip_check;
   // Lossy formats (.vert, .stl): the surface is checked again as the file will hold it.
@@ -243,7 +253,18 @@ int SurfaceCommand::run() const {
 
   // All or nothing: every file is complete before any replaces an old one.
   OutputFiles files;
-  files.add_mesh(out, surface, written.options);
+  if (split_components) {
+    // The parts' names are known only now: checked like every output before anything is written.
+    const std::vector<SurfaceComponent> parts = molsurf::split_components(surface);
+    std::vector<OutputRequest> part_outputs(outputs.begin() + 1, outputs.end());
+    for (const SurfaceComponent& part : parts)
+      part_outputs.push_back({component_output_path(out, part), "--split-components", true});
+    check_output_paths(inputs, part_outputs);
+    for (const SurfaceComponent& part : parts)
+      files.add_checked_mesh(component_output_path(out, part), part.mesh, written.options, check_options);
+  } else {
+    files.add_mesh(out, surface, written.options);
+  }
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, measures.atom_area));
   if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, measures.atom_area));
   report.seconds.write = computed.seconds.measures + seconds_since(clock);

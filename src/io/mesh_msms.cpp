@@ -1,7 +1,11 @@
-// MSMS's triangulated-surface pair, the input of BEM solvers such as TABI-PB and PyGBe:
-//   NAME.vert  x y z nx ny nz face_number closest_sphere type      "%9.3f x6 %7d %7d %2d"
+// MSMS's triangulated-surface pair, the input of BEM solvers (TABI-PB, PyGBe) and of
+// MaSIF-style feature pipelines:
+//   NAME.vert  x y z nx ny nz face_number closest_sphere type [atom_name]
+//              "%9.3f x6 %7d %7d %2d", the name (when atoms are known) after a blank
 //   NAME.face  v1 v2 v3 (1-based) type face_number               "%6d x3 %2d %6d"
-// each after a 3-line header (comment, column legend, "count #spheres density probe").
+// each after MSMS's 3-line header (what the surface is, a column legend, and "count
+// #spheres density probe"), which `msms_header = false` leaves out.
+//
 // MSMS prints coordinates with 3 decimals, so by default this format is lossy (0.0005 A).
 // Where 3 decimals would break the surface (faces that become degenerate or cross), the
 // caller asks for MeshWriteOptions::msms_decimals = kMsmsExact: each coordinate is then
@@ -9,16 +13,33 @@
 // the same 9-character column where it fits. Readers of .vert split on whitespace
 // (docs/formats.md), so the wider numbers are read correctly.
 //
-// What we put in MSMS's columns: the closest sphere is the nearest atom by |p-c|-r
-// among the atoms tagging the faces around the vertex (face tag + 1 without atoms, 0
-// when untagged); a face's "analytical face number" is its tag + 1 (the atom patch it
-// lies on, 0 untagged). MSMS's type codes classify SES patches (contact, toric,
-// reentrant), which a union of atom spheres does not have: every row gets type 1.
+// What MSMS's columns mean for a union of atom spheres (MSMS manual, docs/formats.md):
+//  - every triangle lies on an atom's sphere, which MSMS calls a contact face: type 3
+//    for every vertex and face (1 and 2 are the SES's toric and spheric reentrant faces,
+//    which this surface does not have);
+//  - the analytical face of a triangle is its atom's patch: tag + 1 (0 untagged). A
+//    vertex inside one patch gets that patch's number; on a seam between two patches
+//    (an edge of the analytical surface) minus the seam's number (seams numbered from 1
+//    in order of their first vertex); where three or more patches meet (a vertex of the
+//    analytical surface), 0;
+//  - the closest sphere is the nearest atom by |p-c|-r among the atoms tagging the faces
+//    around the vertex (face tag + 1 without atoms, 0 when untagged);
+//  - the atom name is that atom as MaSIF's MSMS input names it,
+//    CHAIN_RESNUM_INSERTION_RESNAME_ATOM (insertion "x" when blank), or the name an
+//    .xyzr file gave it; the column is there only when some atom has a name;
+//  - the normal inside one atom's patch is that sphere's outward normal at the vertex,
+//    the exact normal of the surface there; on a seam, where the surface has a crease and
+//    no normal, it is the area-weighted mean of the normals of the faces around the
+//    vertex, the mean normal of the piece of surface the vertex stands for.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <span>
+#include <string>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
@@ -28,7 +49,7 @@ namespace molsurf::mesh_io {
 
 namespace {
 
-constexpr int kPatchType = 1;
+constexpr int kContactType = 3;  // MSMS: 1 toric reentrant, 2 spheric reentrant, 3 contact
 
 struct PairPaths {
   path vert;
@@ -61,6 +82,85 @@ std::vector<long long> closest_spheres(const Mesh& mesh, std::span<const Atom> a
     }
   }
   return closest;
+}
+
+// The distinct atoms (face tags) of the faces around each vertex, ascending: one patch
+// inside an atom's patch, two on a seam, three or more where seams meet.
+struct VertexPatches {
+  std::vector<std::size_t> start;  // vertex v's atoms: tags[start[v] .. start[v + 1])
+  std::vector<std::int32_t> tags;
+  std::span<const std::int32_t> of(std::size_t v) const {
+    return std::span<const std::int32_t>(tags).subspan(start[v], start[v + 1] - start[v]);
+  }
+};
+
+VertexPatches vertex_patches(const Mesh& mesh) {
+  std::vector<std::pair<Index, std::int32_t>> corners;
+  corners.reserve(mesh.face_count() * 3);
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    if (const std::int32_t tag = mesh.tag(f); tag >= 0)
+      for (Index v : mesh.faces[f]) corners.emplace_back(v, tag);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  VertexPatches patches;
+  patches.start.assign(mesh.vertex_count() + 1, 0);
+  for (const auto& [v, tag] : corners) ++patches.start[v + 1];
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) patches.start[v + 1] += patches.start[v];
+  patches.tags.reserve(corners.size());
+  for (const auto& corner : corners) patches.tags.push_back(corner.second);
+  return patches;
+}
+
+// MSMS's analytical face number of each vertex (see the file comment).
+std::vector<long long> analytical_numbers(const Mesh& mesh, const VertexPatches& patches) {
+  std::vector<long long> number(mesh.vertex_count(), 0);
+  std::map<std::pair<std::int32_t, std::int32_t>, long long> seams;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const std::span<const std::int32_t> atoms = patches.of(v);
+    if (atoms.size() == 1) number[v] = atoms[0] + 1LL;
+    if (atoms.size() == 2)
+      number[v] = -seams.try_emplace({atoms[0], atoms[1]}, static_cast<long long>(seams.size()) + 1).first->second;
+  }
+  return number;
+}
+
+// Unit normals (see the file comment): the sphere's inside a patch, the area-weighted
+// mean of the faces around the vertex elsewhere and without atoms. The sphere's normal is
+// oriented as the faces are, so a component written turned inside out stays consistent.
+std::vector<Vec3> msms_normals(const Mesh& mesh, std::span<const Atom> atoms, const VertexPatches& patches) {
+  std::vector<Vec3> normals = vertex_normals(mesh);
+  if (atoms.empty()) return normals;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (patches.of(v).size() != 1) continue;
+    const Vec3 radial = mesh.vertices[v] - atoms[static_cast<std::size_t>(patches.of(v)[0])].centre;
+    const double length = norm(radial);
+    const double side = dot(radial, normals[v]);
+    if (length > 0 && side != 0) normals[v] = radial / (side > 0 ? length : -length);
+  }
+  return normals;
+}
+
+// One whitespace-free token naming an atom, as MaSIF's MSMS input does:
+// CHAIN_RESNUM_INSERTION_RESNAME_ATOM, insertion "x" when blank; an atom without a
+// residue (from .xyzr) by its own name. Blanks inside a name would split the column: '_'.
+std::string atom_token(const Atom& atom) {
+  std::string token = atom.residue_name.empty() && atom.chain.empty()
+                          ? atom.atom_name
+                          : atom.chain + '_' + std::to_string(atom.residue_number) + '_' +
+                                (atom.insertion_code == ' ' ? 'x' : atom.insertion_code) + '_' +
+                                atom.residue_name + '_' + atom.atom_name;
+  for (char& c : token)
+    if (static_cast<unsigned char>(c) <= ' ' || c == 0x7f) c = '_';
+  return token.empty() ? "?" : token;
+}
+
+// The first header line: what the surface is, on one line.
+std::string header_comment(const char* what, const MeshWriteOptions& options) {
+  std::string description = options.surface_description.empty() ? "surface" : options.surface_description;
+  for (char& c : description)
+    if (c == '\n' || c == '\r') c = ' ';
+  return std::string("# MSMS-format ") + what + " of the " + description + " (molsurf " MOLSURF_VERSION
+         ": a union of atom spheres, every face a contact face)\n";
 }
 
 std::size_t sphere_count(const Mesh& mesh, std::span<const Atom> atoms) {
@@ -133,14 +233,20 @@ void for_each_row(const path& file, std::string text, const char* what, OnRow on
 
 void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const PairPaths paths = pair_paths(file);
-  const std::vector<Vec3> normals = vertex_normals(mesh);
+  const VertexPatches patches = vertex_patches(mesh);
+  const std::vector<Vec3> normals = msms_normals(mesh, options.atoms, patches);
+  const std::vector<long long> analytical = analytical_numbers(mesh, patches);
   const std::vector<long long> closest = closest_spheres(mesh, options.atoms);
   const std::size_t spheres = sphere_count(mesh, options.atoms);
+  // Names only when the atoms have some, as MSMS writes them only when its input names them.
+  const bool names = options.msms_atom_names &&
+                     std::any_of(options.atoms.begin(), options.atoms.end(),
+                                 [](const Atom& atom) { return !atom.atom_name.empty() || !atom.residue_name.empty(); });
 
   std::string vert;
-  vert.reserve(mesh.vertex_count() * 82 + 256);
+  vert.reserve(mesh.vertex_count() * (names ? 100 : 82) + 256);
   if (options.msms_header) {
-    vert += "# MSMS solvent excluded surface vertices (molsurf " MOLSURF_VERSION ": surface by mesh union)\n";
+    vert += header_comment("vertices", options);
     vert += "#vertex #sphere density probe_r\n";
     append_formatted(vert, "%7zu %7zu %5.2f %5.2f\n", mesh.vertex_count(), spheres, options.density,
                      options.probe_radius);
@@ -152,20 +258,26 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
       append_vert_coordinate(vert, c, options.msms_decimals);
       vert += ' ';
     }
-    append_formatted(vert, "%9.3f %9.3f %9.3f %7d %7lld %2d\n", n.x, n.y, n.z, 0, closest[v], kPatchType);
+    append_formatted(vert, "%9.3f %9.3f %9.3f %7lld %7lld %2d", n.x, n.y, n.z, analytical[v], closest[v],
+                     kContactType);
+    if (names) {
+      vert += ' ';
+      vert += closest[v] > 0 ? atom_token(options.atoms[static_cast<std::size_t>(closest[v] - 1)]) : "?";
+    }
+    vert += '\n';
   }
 
   std::string face;
   face.reserve(mesh.face_count() * 32 + 256);
   if (options.msms_header) {
-    face += "# MSMS solvent excluded surface faces (molsurf " MOLSURF_VERSION ": surface by mesh union)\n";
+    face += header_comment("faces", options);
     face += "#faces  #sphere density probe_r\n";
     append_formatted(face, "%7zu %7zu %5.2f %5.2f\n", mesh.face_count(), spheres, options.density,
                      options.probe_radius);
   }
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const Triangle& t = mesh.faces[f];
-    append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, kPatchType,
+    append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, kContactType,
                      std::max(mesh.tag(f), kNoTag) + 1);
   }
 

@@ -98,6 +98,18 @@ void OutputFiles::add_mesh(const fs::path& path, const Mesh& mesh, const MeshWri
   mesh_io::write_into(*files_, path, mesh, options);
 }
 
+void OutputFiles::add_checked_mesh(const fs::path& path, const Mesh& mesh, const MeshWriteOptions& options,
+                                   const MeshCheckOptions& check_options) {
+  const MeshCheck check = check_mesh(mesh_as_written(mesh, mesh_format_from_path(path), options), check_options);
+  if (check.verdict() != MeshCheck::Verdict::valid) {
+    std::string defects;
+    for (const std::string& defect : check.defects()) defects += (defects.empty() ? "" : "; ") + defect;
+    throw Error(path.string() + ": not written: the surface as this file holds it is not valid (" +
+                (check.empty() ? std::string("no faces") : defects) + ")");
+  }
+  add_mesh(path, mesh, options);
+}
+
 void OutputFiles::add_text(const fs::path& path, std::string content) {
   if (path == kStandardOutput) {
     standard_output_.push_back(std::move(content));
