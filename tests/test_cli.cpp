@@ -441,5 +441,75 @@ TEST(Cli, InputProblemsGetOneLineMessages) {
   }
 }
 
+// --split-components: one file per closed surface, named after -o, in the report's order,
+// each passing `molsurf check` on its own; the parts' names are checked like every output.
+TEST(Cli, SplitComponentsWritesEachClosedSurfaceApart) {
+  TempDir dir;
+  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
+  const auto r = run_molsurf("--split-components -o crambin.ply " + input, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 outer, 1 cavity"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("written: crambin.outer.ply, crambin.cavity-1.ply\n"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "crambin.ply"));
+  std::size_t faces = 0;
+  for (const char* part : {"crambin.outer.ply", "crambin.cavity-1.ply"}) {
+    const auto check = run_molsurf("check " + std::string(part), dir.path());
+    EXPECT_EQ(check.exit_code, 0) << part << "\n" << check.out << check.err;
+    EXPECT_NE(check.out.find("components               1\n"), std::string::npos) << part << "\n" << check.out;
+    EXPECT_NE(check.out.find("outward                  yes\n"), std::string::npos) << part << "\n" << check.out;
+    faces += read_mesh(dir.path() / part).face_count();
+  }
+  const auto whole = run_molsurf("-q -o whole.ply " + input, dir.path());
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_EQ(faces, read_mesh(dir.path() / "whole.ply").face_count());
+  // MSMS parts come in pairs; a part's name that another output takes is refused, and
+  // nothing is written.
+  const auto msms = run_molsurf("-q --split-components -o c.vert " + input, dir.path());
+  ASSERT_EQ(msms.exit_code, 0) << msms.err;
+  for (const char* file : {"c.outer.vert", "c.outer.face", "c.cavity-1.vert", "c.cavity-1.face"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / file)) << file;
+  std::filesystem::copy_file(dir.path() / "c.outer.vert", dir.path() / "y.outer.vert");
+  const auto refused = run_molsurf("-q --split-components -o y.vert --json y.outer.vert " + input, dir.path());
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("y.outer.vert"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "y.cavity-1.vert"));
+}
+
+// --ascii writes PLY and STL as text, read back as the binary files are.
+TEST(Cli, AsciiPlyAndStl) {
+  TempDir dir;
+  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
+  for (const char* extension : {"ply", "stl"}) {
+    const std::string binary = std::string("b.") + extension, text = std::string("t.") + extension;
+    ASSERT_EQ(run_molsurf("-q -o " + binary + " " + input, dir.path()).exit_code, 0);
+    ASSERT_EQ(run_molsurf("-q --ascii -o " + text + " " + input, dir.path()).exit_code, 0);
+    const std::string start = testing::read_text(dir.path() / text).substr(0, 40);
+    EXPECT_TRUE(start.rfind("ply\nformat ascii 1.0\n", 0) == 0 || start.rfind("solid ", 0) == 0) << start;
+    EXPECT_NE(testing::read_text(dir.path() / binary).substr(0, 40), start);
+    const Mesh a = read_mesh(dir.path() / binary), b = read_mesh(dir.path() / text);
+    EXPECT_EQ(a.vertices, b.vertices) << extension;
+    EXPECT_EQ(a.faces, b.faces) << extension;
+  }
+}
+
+// --no-header: MSMS rows only, numbers only (no header, no atom names); the default has
+// MSMS's three header lines and the closest atom's name.
+TEST(Cli, MsmsHeaderAndNamesOrNeither) {
+  TempDir dir;
+  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
+  ASSERT_EQ(run_molsurf("-q -o named.vert " + input, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_molsurf("-q --no-header -o bare.vert " + input, dir.path()).exit_code, 0);
+  const std::string named = testing::read_text(dir.path() / "named.vert");
+  const std::string bare = testing::read_text(dir.path() / "bare.vert");
+  EXPECT_EQ(named.rfind("# MSMS-format vertices of the solvent accessible surface for 1crn.pdb (", 0), 0u)
+      << named.substr(0, 200);
+  EXPECT_NE(named.find(" A_1_x_THR_"), std::string::npos);
+  EXPECT_EQ(bare.find_first_not_of("0123456789.- \n"), std::string::npos);
+  EXPECT_EQ(std::count(named.begin(), named.end(), '\n'), std::count(bare.begin(), bare.end(), '\n') + 3);
+  EXPECT_EQ(read_mesh(dir.path() / "named.vert").vertices, read_mesh(dir.path() / "bare.vert").vertices);
+  ASSERT_EQ(run_molsurf("-q --probe 0 -o vdw.vert " + input, dir.path()).exit_code, 0);
+  EXPECT_EQ(testing::read_text(dir.path() / "vdw.face").rfind("# MSMS-format faces of the van der Waals surface", 0), 0u);
+}
+
 }  // namespace
 }  // namespace molsurf

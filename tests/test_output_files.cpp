@@ -210,5 +210,34 @@ TEST_F(OutputFilesTest, OutputsAreReplacedTogether) {
   EXPECT_EQ(entries, 3u);
 }
 
+// A mesh checked only when it is added (a part that --split-components writes) is checked
+// as the file will hold it: a valid one is written, one that the format's rounding
+// breaks, or an inside-out one, is refused by name and nothing of the run is written.
+TEST_F(OutputFilesTest, CheckedMeshIsRefusedUnlessValidAsWritten) {
+  const Mesh sphere = make_icosphere({1, 2, 3}, 1.5, {.frequency = 3, .tag = 0});
+  {
+    OutputFiles files;
+    files.add_checked_mesh(dir_ / "good.vert", sphere, {}, {});
+    files.add_text(dir_ / "report.txt", "report");
+    EXPECT_EQ(files.commit().size(), 3u);
+  }
+  Mesh inside_out = sphere;
+  for (Triangle& t : inside_out.faces) std::swap(t[1], t[2]);
+  const Mesh rounded_away = thin_tetrahedron();  // valid with doubles, flat at 3 decimals
+  ASSERT_TRUE(check_mesh(rounded_away).valid());
+  for (const auto& [name, mesh] : {std::pair{"turned.ply", inside_out}, std::pair{"rounded.vert", rounded_away}}) {
+    OutputFiles files;
+    files.add_text(dir_ / "other.txt", "other");
+    const std::string message = error_of([&] { files.add_checked_mesh(dir_ / name, mesh, {}, {}); });
+    EXPECT_EQ(message.rfind((dir_ / name).string() + ": not written: the surface as this file holds it is not valid (",
+                            0),
+              0u)
+        << name << ": " << message;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "other.txt"));
+  EXPECT_FALSE(fs::exists(dir_ / "turned.ply"));
+  EXPECT_FALSE(fs::exists(dir_ / "rounded.vert"));
+}
+
 }  // namespace
 }  // namespace molsurf
