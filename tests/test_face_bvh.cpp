@@ -93,3 +93,43 @@ TEST(BoxBvh, FacesOfAMeshWithExclusions) {
   EXPECT_EQ(bvh.overlapping_pairs(), (std::vector<Pair>{{0, 1}}));
   EXPECT_EQ(BoxBvh::for_faces(mesh).overlapping_pairs(), (std::vector<Pair>{{0, 1}, {0, 3}, {1, 3}}));
 }
+
+// The tree stores its boxes in single precision, rounded outward: every pair of boxes that
+// overlap or touch in double precision must still be found, whatever their coordinates
+// (here, none representable as a float), and a pair found beyond that may only be apart
+// by the rounding (a few float ulps).
+TEST(BoxBvh, SinglePrecisionBoundsMissNoPairOfDoubleBoxes) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> corner(-120.0, 120.0), size(0.0, 3.0);
+  std::vector<BoundingBox> boxes;
+  for (int k = 0; k < 1500; ++k) {
+    BoundingBox a;
+    a.min = {corner(rng), corner(rng), corner(rng)};
+    a.max = a.min + Vec3{size(rng), size(rng), size(rng)};
+    boxes.push_back(a);
+    // Its neighbour touches it exactly in x (a tie), or misses it by 1e-12.
+    BoundingBox b = a;
+    b.min.x = a.max.x + (k % 2 == 0 ? 0.0 : 1e-12);
+    b.max.x = b.min.x + size(rng);
+    boxes.push_back(b);
+  }
+  const BoxBvh bvh(boxes);
+  const auto expected = brute_force_pairs(boxes);
+  const auto found = bvh.overlapping_pairs();
+  EXPECT_TRUE(std::includes(found.begin(), found.end(), expected.begin(), expected.end()));
+  EXPECT_GE(expected.size(), 750u);
+  for (const auto& [i, j] : found) {
+    const BoundingBox& a = boxes[i];
+    const BoundingBox& b = boxes[j];
+    const double gap = std::max({a.min.x - b.max.x, b.min.x - a.max.x, a.min.y - b.max.y, b.min.y - a.max.y,
+                                 a.min.z - b.max.z, b.min.z - a.max.z});
+    EXPECT_LE(gap, 1e-4) << i << ", " << j;
+  }
+  // Queries by double boxes see the same superset.
+  for (std::uint32_t i = 0; i < boxes.size(); i += 7) {
+    std::vector<std::uint32_t> hits;
+    bvh.for_each_overlap(boxes[i], [&](std::uint32_t j) { hits.push_back(j); });
+    for (std::uint32_t j = 0; j < boxes.size(); ++j)
+      if (boxes_overlap(boxes[i], boxes[j])) EXPECT_NE(std::find(hits.begin(), hits.end(), j), hits.end()) << i << ", " << j;
+  }
+}

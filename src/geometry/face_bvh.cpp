@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "common/parallel_exceptions.hpp"
@@ -10,17 +11,10 @@ namespace molsurf::geometry {
 
 namespace {
 
-BoundingBox union_of(const BoundingBox& a, const BoundingBox& b) {
-  BoundingBox u;
-  u.min = {std::min(a.min.x, b.min.x), std::min(a.min.y, b.min.y), std::min(a.min.z, b.min.z)};
-  u.max = {std::max(a.max.x, b.max.x), std::max(a.max.y, b.max.y), std::max(a.max.z, b.max.z)};
-  return u;
-}
-
 // Box centre along one axis; NaN becomes 0 so nth_element always sees a strict weak order.
-double centre(const BoundingBox& b, int axis) {
+float centre(const BoundingBox& b, int axis) {
   const double c = 0.5 * b.min[axis] + 0.5 * b.max[axis];
-  return std::isnan(c) ? 0.0 : c;
+  return std::isnan(c) ? 0.0f : static_cast<float>(std::clamp(c, -1e38, 1e38));
 }
 
 }  // namespace
@@ -40,32 +34,64 @@ void BoxBvh::Bounds::resize(std::size_t n) {
   for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->resize(n);
 }
 
+namespace {
+
+// The largest float not above x, and the smallest not below it (outside float's range:
+// the infinities, so a huge box still covers everything it must).
+float float_below(double x) {
+  if (!(x <= std::numeric_limits<float>::max())) return x > 0 ? std::numeric_limits<float>::max() : x;
+  if (x < -static_cast<double>(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::infinity();
+  const auto f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+float float_above(double x) { return -float_below(-x); }
+
+}  // namespace
+
 void BoxBvh::Bounds::set(std::size_t i, const BoundingBox& b) {
-  min_x[i] = b.min.x;
-  min_y[i] = b.min.y;
-  min_z[i] = b.min.z;
-  max_x[i] = b.max.x;
-  max_y[i] = b.max.y;
-  max_z[i] = b.max.z;
+  min_x[i] = float_below(b.min.x);
+  min_y[i] = float_below(b.min.y);
+  min_z[i] = float_below(b.min.z);
+  max_x[i] = float_above(b.max.x);
+  max_y[i] = float_above(b.max.y);
+  max_z[i] = float_above(b.max.z);
+}
+
+void BoxBvh::Bounds::set_union(std::size_t i, const Bounds& from, std::size_t first, std::size_t end) {
+  float lo[3] = {from.min_x[first], from.min_y[first], from.min_z[first]};
+  float hi[3] = {from.max_x[first], from.max_y[first], from.max_z[first]};
+  for (std::size_t k = first + 1; k < end; ++k) {
+    lo[0] = std::min(lo[0], from.min_x[k]);
+    lo[1] = std::min(lo[1], from.min_y[k]);
+    lo[2] = std::min(lo[2], from.min_z[k]);
+    hi[0] = std::max(hi[0], from.max_x[k]);
+    hi[1] = std::max(hi[1], from.max_y[k]);
+    hi[2] = std::max(hi[2], from.max_z[k]);
+  }
+  min_x[i] = lo[0];
+  min_y[i] = lo[1];
+  min_z[i] = lo[2];
+  max_x[i] = hi[0];
+  max_y[i] = hi[1];
+  max_z[i] = hi[2];
 }
 
 BoxBvh::BoxBvh(std::span<const BoundingBox> boxes) {
   std::vector<std::uint32_t> ids(boxes.size());
   std::iota(ids.begin(), ids.end(), 0u);
-  build(boxes, std::move(ids));
+  build([boxes](std::uint32_t id) { return boxes[id]; }, std::move(ids));
 }
 
 BoxBvh BoxBvh::for_faces(const Mesh& mesh, std::span<const std::uint8_t> include) {
-  std::vector<BoundingBox> boxes(mesh.faces.size());
-  const auto nf = static_cast<std::int64_t>(mesh.faces.size());
-#pragma omp parallel for schedule(static)
-  for (std::int64_t f = 0; f < nf; ++f) boxes[f] = face_box(mesh, static_cast<std::size_t>(f));
   std::vector<std::uint32_t> ids;
   ids.reserve(mesh.faces.size());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
     if (include.empty() || include[f]) ids.push_back(static_cast<std::uint32_t>(f));
+  // A face's box is recomputed from its corners where needed (twice per face) instead of
+  // being stored: on a 10 M-face surface that saves the largest array of the build.
   BoxBvh bvh;
-  bvh.build(boxes, std::move(ids));
+  bvh.build([&mesh](std::uint32_t f) { return face_box(mesh, f); }, std::move(ids));
   return bvh;
 }
 
@@ -81,51 +107,55 @@ std::uint32_t subtree_nodes(std::uint32_t items) {
 }
 
 // An item being sorted into leaf order: its centre travels with it, so the median
-// selections stream through contiguous memory.
+// selections stream through contiguous memory. Single precision is enough to order
+// centres (any order gives a correct tree) and halves the memory.
 struct SortItem {
-  double centre[3];
+  float centre[3];
   std::uint32_t id;
 };
 
 }  // namespace
 
 // Node `node` covers items [begin, end); its children are the pair at `next`, and their
-// descendants follow: the left child's first, then the right child's. A node's box is the
-// union of its children's, computed after them.
+// descendants follow: the left child's first, then the right child's. A leaf writes its
+// items and their boxes in their final positions; an inner node's box is the union of its
+// children's, computed after them.
+template <class BoxOf>
 struct BoxBvh::Builder {
-  std::span<const BoundingBox> boxes;
+  const BoxOf& box_of;
   std::vector<SortItem>& items;
-  std::vector<BoundingBox>& node_boxes;
-  std::vector<std::uint32_t>& first;
-  std::vector<std::uint32_t>& count;
-  std::vector<std::uint32_t>& item_end;
+  BoxBvh& tree;
 
   // Ranges smaller than this are built by the task that reached them.
   static constexpr std::uint32_t kTaskItems = 8192;
 
   void build(std::uint32_t node, std::uint32_t next, std::uint32_t begin, std::uint32_t end) {
     if (end - begin <= kLeafSize) {
-      first[node] = begin;
-      count[node] = end - begin;
-      item_end[node] = end;
-      BoundingBox box;
-      for (std::uint32_t k = begin; k < end; ++k) box = union_of(box, boxes[items[k].id]);
-      node_boxes[node] = box;
+      tree.first_[node] = begin;
+      tree.count_[node] = end - begin;
+      tree.item_end_[node] = end;
+      for (std::uint32_t k = begin; k < end; ++k) {
+        tree.items_[k] = items[k].id;
+        tree.item_bounds_.set(k, box_of(items[k].id));
+      }
+      tree.node_bounds_.set_union(node, tree.item_bounds_, begin, end);
       return;
     }
-    BoundingBox centres;
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const Vec3 c{items[k].centre[0], items[k].centre[1], items[k].centre[2]};
-      centres = union_of(centres, BoundingBox{c, c});
-    }
-    const Vec3 extent = centres.max - centres.min;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    float lo[3] = {items[begin].centre[0], items[begin].centre[1], items[begin].centre[2]};
+    float hi[3] = {lo[0], lo[1], lo[2]};
+    for (std::uint32_t k = begin + 1; k < end; ++k)
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], items[k].centre[a]);
+        hi[a] = std::max(hi[a], items[k].centre[a]);
+      }
+    const float ex = hi[0] - lo[0], ey = hi[1] - lo[1], ez = hi[2] - lo[2];
+    const int axis = ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
                      [axis](const SortItem& a, const SortItem& b) { return a.centre[axis] < b.centre[axis]; });
-    first[node] = next;
-    count[node] = 0;
-    item_end[node] = end;
+    tree.first_[node] = next;
+    tree.count_[node] = 0;
+    tree.item_end_[node] = end;
     const std::uint32_t left_next = next + 2;
     const std::uint32_t right_next = left_next + subtree_nodes(mid - begin) - 1;
     if (end - begin >= kTaskItems) {
@@ -137,11 +167,12 @@ struct BoxBvh::Builder {
       build(next, left_next, begin, mid);
       build(next + 1, right_next, mid, end);
     }
-    node_boxes[node] = union_of(node_boxes[next], node_boxes[next + 1]);
+    tree.node_bounds_.set_union(node, tree.node_bounds_, next, next + 2);
   }
 };
 
-void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t> ids) {
+template <class BoxOf>
+void BoxBvh::build(const BoxOf& box_of, std::vector<std::uint32_t> ids) {
   item_count_ = ids.size();
   if (ids.empty()) return;
   const auto n = static_cast<std::int64_t>(ids.size());
@@ -149,33 +180,22 @@ void BoxBvh::build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t
   std::vector<SortItem> items(ids.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t k = 0; k < n; ++k) {
-    const BoundingBox& b = boxes[ids[k]];
+    const BoundingBox b = box_of(ids[k]);
     items[k] = {{centre(b, 0), centre(b, 1), centre(b, 2)}, ids[k]};
   }
-  node_count_ = subtree_nodes(static_cast<std::uint32_t>(ids.size()));
-  std::vector<BoundingBox> node_boxes(node_count_);
+  ids = {};
+  node_count_ = subtree_nodes(static_cast<std::uint32_t>(items.size()));
   first_.assign(node_count_, 0);
   count_.assign(node_count_, 0);
   item_end_.assign(node_count_, 0);
-  Builder builder{boxes, items, node_boxes, first_, count_, item_end_};
-#pragma omp parallel
-#pragma omp single
-  builder.build(0, 1, 0, static_cast<std::uint32_t>(ids.size()));
-
   node_bounds_.resize(node_count_);
   items_.resize(items.size());
   item_bounds_.resize(items.size());
-  const auto nodes = static_cast<std::int64_t>(node_count_);
+  Builder<BoxOf> builder{box_of, items, *this};
 #pragma omp parallel
-  {
-#pragma omp for schedule(static) nowait
-    for (std::int64_t k = 0; k < nodes; ++k) node_bounds_.set(static_cast<std::size_t>(k), node_boxes[k]);
-#pragma omp for schedule(static) nowait
-    for (std::int64_t k = 0; k < n; ++k) {
-      items_[k] = items[k].id;
-      item_bounds_.set(static_cast<std::size_t>(k), boxes[items[k].id]);
-    }
-  }
+#pragma omp single
+  builder.build(0, 1, 0, static_cast<std::uint32_t>(items.size()));
+
   for (std::uint32_t node = 0; node < node_count_; ++node)
     if (count_[node] > 0) leaves_.push_back(node);
   std::sort(leaves_.begin(), leaves_.end(), [&](std::uint32_t a, std::uint32_t b) { return first_[a] < first_[b]; });
@@ -192,9 +212,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> BoxBvh::overlapping_pairs()
     for (std::int64_t k = 0; k < n; ++k)
       errors.run(k, [&] {
         const std::uint32_t i = items_[k];
-        BoundingBox query;
-        query.min = {item_bounds_.min_x[k], item_bounds_.min_y[k], item_bounds_.min_z[k]};
-        query.max = {item_bounds_.max_x[k], item_bounds_.max_y[k], item_bounds_.max_z[k]};
+        const BoundingBox query = item_bounds_.get(static_cast<std::size_t>(k));
         for_each_overlap(query, [&](std::uint32_t j) {
           if (i < j) local.emplace_back(i, j);
         });

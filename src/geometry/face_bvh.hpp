@@ -66,18 +66,30 @@ class BoxBvh {
   void for_each_pair_at_leaf(std::size_t leaf, Visit&& visit) const;
 
  private:
+  // Boxes in single precision, rounded outward (every double box lies inside its float
+  // box), so culling stays conservative at half the memory: the exact tests decide, and a
+  // few more candidate pairs are the cost.
   struct Bounds {  // structure of arrays: one entry per node or per leaf-ordered item
-    std::vector<double> min_x, min_y, min_z, max_x, max_y, max_z;
+    std::vector<float> min_x, min_y, min_z, max_x, max_y, max_z;
     void resize(std::size_t n);
     void set(std::size_t i, const BoundingBox& b);
+    void set_union(std::size_t i, const Bounds& from, std::size_t first, std::size_t end);  // of from[first, end)
+    BoundingBox get(std::size_t i) const {
+      BoundingBox b;
+      b.min = {min_x[i], min_y[i], min_z[i]};
+      b.max = {max_x[i], max_y[i], max_z[i]};
+      return b;
+    }
     bool overlaps(std::size_t i, const BoundingBox& q) const {
       return min_x[i] <= q.max.x && q.min.x <= max_x[i] && min_y[i] <= q.max.y && q.min.y <= max_y[i] &&
              min_z[i] <= q.max.z && q.min.z <= max_z[i];
     }
   };
 
+  template <class BoxOf>
   struct Builder;
-  void build(std::span<const BoundingBox> boxes, std::vector<std::uint32_t> ids);
+  template <class BoxOf>
+  void build(const BoxOf& box_of, std::vector<std::uint32_t> ids);
 
   std::size_t item_count_ = 0, node_count_ = 0;
   Bounds node_bounds_;
@@ -103,19 +115,14 @@ void BoxBvh::for_each_overlap(const BoundingBox& query, Visit&& visit) const {
 template <class Visit>
 void BoxBvh::for_each_pair_at_leaf(std::size_t leaf, Visit&& visit) const {
   const std::uint32_t node = leaves_[leaf], first = first_[node], end = first + count_[node];
-  BoundingBox box;
-  box.min = {node_bounds_.min_x[node], node_bounds_.min_y[node], node_bounds_.min_z[node]};
-  box.max = {node_bounds_.max_x[node], node_bounds_.max_y[node], node_bounds_.max_z[node]};
+  const BoundingBox box = node_bounds_.get(node);
   // Each pair once: from the leaf holding its earlier item, with the later one found (so
   // the subtrees wholly before this leaf are skipped).
   for_each_overlap_position(
       box,
       [&](std::uint32_t k) {
         for (std::uint32_t p = first; p < end && p < k; ++p) {
-          BoundingBox item;
-          item.min = {item_bounds_.min_x[p], item_bounds_.min_y[p], item_bounds_.min_z[p]};
-          item.max = {item_bounds_.max_x[p], item_bounds_.max_y[p], item_bounds_.max_z[p]};
-          if (item_bounds_.overlaps(k, item)) visit(items_[p], items_[k]);
+          if (item_bounds_.overlaps(k, item_bounds_.get(p))) visit(items_[p], items_[k]);
         }
       },
       first);
