@@ -490,6 +490,14 @@ TEST(Cli, AsciiPlyAndStl) {
     EXPECT_EQ(a.vertices, b.vertices) << extension;
     EXPECT_EQ(a.faces, b.faces) << extension;
   }
+  // Options that do not apply to the output's format are refused before any work.
+  for (const char* options : {"--ascii -o x.vtp", "--no-header -o x.ply"}) {
+    const auto r = run_molsurf(std::string("-q ") + options + " " + input, dir.path());
+    EXPECT_EQ(r.exit_code, 1) << options;
+    EXPECT_NE(r.err.find(std::string(options).substr(0, std::string(options).find(' ')) + ": -o x."), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.vtp"));
+  }
 }
 
 // --no-header: MSMS rows only, numbers only (no header, no atom names); the default has

@@ -161,7 +161,14 @@ int SurfaceCommand::run() const {
   if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
-  mesh_format_from_path(out);  // reject an unknown extension before any work
+  // Reject an unknown extension, and options that do not apply to it, before any work.
+  const MeshFormat format = mesh_format_from_path(out);
+  if (ascii && format != MeshFormat::ply && format != MeshFormat::stl)
+    throw Error("--ascii: -o " + out.string() + " is " + mesh_format_name(format) +
+                ", which has one form only; --ascii is for .ply and .stl");
+  if (no_header && format != MeshFormat::msms)
+    throw Error("--no-header: -o " + out.string() + " is " + mesh_format_name(format) +
+                ", which has no MSMS header; --no-header is for .vert/.face");
   // With a report on standard output, the text report goes to standard error.
   bool report_to_stdout = false;
   for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
