@@ -4,7 +4,7 @@ element's normal from its three vertex normals (TABI-PB's centroid-collocation r
 does: the normalized mean), against the face's own normal, for several rules of what a
 vertex normal is. Used for the figures in docs/formats.md.
 
-    scripts/msms_normal_study.py MOLSURF STRUCTURE [PROBE]
+    scripts/msms_normal_study.py MOLSURF STRUCTURE [MOLSURF OPTIONS...]
 
 Runs MOLSURF on the structure as an .xyzr sphere list (the atoms' centres are needed; a
 .pdb or .cif is converted with gemmi, Bondi radii by element, hydrogens and waters
@@ -42,13 +42,13 @@ def to_xyzr(structure, xyzr):
 
 def main():
     molsurf, structure = sys.argv[1], Path(sys.argv[2])
-    probe = float(sys.argv[3]) if len(sys.argv) > 3 else 1.4
+    options = sys.argv[3:]  # e.g. --density 4
     with tempfile.TemporaryDirectory() as directory:
         stem = Path(directory) / "s"
         if structure.suffix != ".xyzr":
             structure = to_xyzr(structure, Path(directory) / "atoms.xyzr")
         atoms = np.loadtxt(structure, usecols=(0, 1, 2))
-        subprocess.run([molsurf, str(structure), "--probe", str(probe), "-o", f"{stem}.vert", "-q"], check=True)
+        subprocess.run([molsurf, str(structure), *options, "-o", f"{stem}.vert", "-q"], check=True)
         rows = np.loadtxt(f"{stem}.vert", skiprows=3, usecols=range(6))
         faces = np.loadtxt(f"{stem}.face", skiprows=3, dtype=int)
     points, written = rows[:, :3], unit(rows[:, 3:6])
