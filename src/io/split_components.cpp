@@ -1,12 +1,13 @@
 #include "molsurf/split_components.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <span>
 #include <string>
 #include <utility>
 
 #include "mesh/component_volume.hpp"
-#include "mesh/topology.hpp"
 
 namespace molsurf {
 
@@ -24,8 +25,21 @@ std::vector<SurfaceComponent> split_components(const Mesh& mesh) {
     return area[a] > area[b];
   });
 
+  // Faces grouped by component (in face order within each), so that each part is built
+  // from its own faces: a surface with thousands of cavities costs one pass, not one per part.
+  std::vector<std::size_t> first(parts.count + 1, 0);
+  for (std::uint32_t c : parts.face_component) ++first[c + 1];
+  for (std::size_t c = 0; c < parts.count; ++c) first[c + 1] += first[c];
+  std::vector<std::size_t> faces_by_component(mesh.faces.size());
+  {
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) faces_by_component[next[parts.face_component[f]]++] = f;
+  }
+
   std::vector<SurfaceComponent> out;
   out.reserve(parts.count);
+  std::vector<Index> renumber(mesh.vertices.size(), ~Index{0});
+  std::vector<Index> used;
   std::size_t outer_count = 0, cavity_count = 0;
   for (std::size_t c : order) {
     SurfaceComponent part;
@@ -33,28 +47,33 @@ std::vector<SurfaceComponent> split_components(const Mesh& mesh) {
     part.number = is_cavity(c) ? ++cavity_count : ++outer_count;
     part.area = area[c];
     part.volume = std::abs(volumes.volume[c]);
-    part.mesh = mesh;
-    std::vector<std::uint8_t> keep(mesh.faces.size());
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) keep[f] = parts.face_component[f] == c;
-    keep_alive_faces(part.mesh, keep);
-    // Vertices in their original relative order (drop_unused_vertices would order them
-    // by first use), so a part's rows follow the whole surface's.
-    std::vector<std::uint8_t> is_used(mesh.vertices.size(), 0);
-    for (const Triangle& t : part.mesh.faces)
-      for (Index v : t) is_used[v] = 1;
-    std::vector<Index> renumber(mesh.vertices.size(), ~Index{0});
-    std::vector<Vec3> used;
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-      if (is_used[v]) {
-        renumber[v] = static_cast<Index>(used.size());
-        used.push_back(mesh.vertices[v]);
-      }
-    part.mesh.vertices = std::move(used);
-    for (Triangle& t : part.mesh.faces) {
+    const std::span<const std::size_t> faces(faces_by_component.data() + first[c], first[c + 1] - first[c]);
+    // Vertices in their original relative order (not by first use), so a part's rows
+    // follow the whole surface's.
+    used.clear();
+    for (std::size_t f : faces)
+      for (Index v : mesh.faces[f])
+        if (renumber[v] == ~Index{0}) {
+          renumber[v] = 0;
+          used.push_back(v);
+        }
+    std::sort(used.begin(), used.end());
+    part.mesh.vertices.reserve(used.size());
+    for (Index v : used) {
+      renumber[v] = static_cast<Index>(part.mesh.vertices.size());
+      part.mesh.vertices.push_back(mesh.vertices[v]);
+    }
+    part.mesh.faces.reserve(faces.size());
+    if (mesh.has_tags()) part.mesh.face_tags.reserve(faces.size());
+    for (std::size_t f : faces) {
+      Triangle t = mesh.faces[f];
       for (Index& v : t) v = renumber[v];
       // A cavity alone is a closed surface seen from its inside: turned, it is outward.
       if (part.kind == SurfaceComponent::Kind::cavity) std::swap(t[1], t[2]);
+      part.mesh.faces.push_back(t);
+      if (mesh.has_tags()) part.mesh.face_tags.push_back(mesh.face_tags[f]);
     }
+    for (Index v : used) renumber[v] = ~Index{0};
     out.push_back(std::move(part));
   }
   return out;
