@@ -84,42 +84,45 @@ std::vector<long long> closest_spheres(const Mesh& mesh, std::span<const Atom> a
   return closest;
 }
 
-// The distinct atoms (face tags) of the faces around each vertex, ascending: one patch
-// inside an atom's patch, two on a seam, three or more where seams meet.
+// The distinct atoms (face tags) of the faces around a vertex, as far as the columns need
+// them: one (inside that atom's patch), two (on the seam between them) or more.
 struct VertexPatches {
-  std::vector<std::size_t> start;  // vertex v's atoms: tags[start[v] .. start[v + 1])
-  std::vector<std::int32_t> tags;
-  std::span<const std::int32_t> of(std::size_t v) const {
-    return std::span<const std::int32_t>(tags).subspan(start[v], start[v + 1] - start[v]);
+  std::int32_t low = kNoTag, high = kNoTag;  // the atom, or the seam's two (low < high)
+  std::uint8_t count = 0;                    // distinct atoms, counted up to 3
+
+  void add(std::int32_t tag) {
+    if (count == 0) {
+      low = tag;
+      count = 1;
+    } else if (count == 1 && tag != low) {
+      high = std::max(low, tag);
+      low = std::min(low, tag);
+      count = 2;
+    } else if (count == 2 && tag != low && tag != high) {
+      count = 3;
+    }
   }
 };
 
-VertexPatches vertex_patches(const Mesh& mesh) {
-  std::vector<std::pair<Index, std::int32_t>> corners;
-  corners.reserve(mesh.face_count() * 3);
+// Per vertex, in one pass over the faces and a few bytes per vertex (no sort: a capsid's
+// hundreds of millions of corners stay cheap).
+std::vector<VertexPatches> vertex_patches(const Mesh& mesh) {
+  std::vector<VertexPatches> patches(mesh.vertex_count());
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
     if (const std::int32_t tag = mesh.tag(f); tag >= 0)
-      for (Index v : mesh.faces[f]) corners.emplace_back(v, tag);
-  std::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  VertexPatches patches;
-  patches.start.assign(mesh.vertex_count() + 1, 0);
-  for (const auto& [v, tag] : corners) ++patches.start[v + 1];
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) patches.start[v + 1] += patches.start[v];
-  patches.tags.reserve(corners.size());
-  for (const auto& corner : corners) patches.tags.push_back(corner.second);
+      for (Index v : mesh.faces[f]) patches[v].add(tag);
   return patches;
 }
 
 // MSMS's analytical face number of each vertex (see the file comment).
-std::vector<long long> analytical_numbers(const Mesh& mesh, const VertexPatches& patches) {
-  std::vector<long long> number(mesh.vertex_count(), 0);
+std::vector<long long> analytical_numbers(std::span<const VertexPatches> patches) {
+  std::vector<long long> number(patches.size(), 0);
   std::map<std::pair<std::int32_t, std::int32_t>, long long> seams;
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const std::span<const std::int32_t> atoms = patches.of(v);
-    if (atoms.size() == 1) number[v] = atoms[0] + 1LL;
-    if (atoms.size() == 2)
-      number[v] = -seams.try_emplace({atoms[0], atoms[1]}, static_cast<long long>(seams.size()) + 1).first->second;
+  for (std::size_t v = 0; v < patches.size(); ++v) {
+    const VertexPatches& p = patches[v];
+    if (p.count == 1) number[v] = p.low + 1LL;
+    if (p.count == 2)
+      number[v] = -seams.try_emplace({p.low, p.high}, static_cast<long long>(seams.size()) + 1).first->second;
   }
   return number;
 }
@@ -127,12 +130,13 @@ std::vector<long long> analytical_numbers(const Mesh& mesh, const VertexPatches&
 // Unit normals (see the file comment): the sphere's inside a patch, the area-weighted
 // mean of the faces around the vertex elsewhere and without atoms. The sphere's normal is
 // oriented as the faces are, so a component written turned inside out stays consistent.
-std::vector<Vec3> msms_normals(const Mesh& mesh, std::span<const Atom> atoms, const VertexPatches& patches) {
+std::vector<Vec3> msms_normals(const Mesh& mesh, std::span<const Atom> atoms,
+                               std::span<const VertexPatches> patches) {
   std::vector<Vec3> normals = vertex_normals(mesh);
   if (atoms.empty()) return normals;
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    if (patches.of(v).size() != 1) continue;
-    const Vec3 radial = mesh.vertices[v] - atoms[static_cast<std::size_t>(patches.of(v)[0])].centre;
+    if (patches[v].count != 1) continue;
+    const Vec3 radial = mesh.vertices[v] - atoms[static_cast<std::size_t>(patches[v].low)].centre;
     const double length = norm(radial);
     const double side = dot(radial, normals[v]);
     if (length > 0 && side != 0) normals[v] = radial / (side > 0 ? length : -length);
@@ -155,12 +159,14 @@ std::string atom_token(const Atom& atom) {
 }
 
 // The first header line: what the surface is, on one line.
+// The first header line: what the surface is, on one line; for a molecular surface (atoms
+// given) also why every row has MSMS's contact type.
 std::string header_comment(const char* what, const MeshWriteOptions& options) {
   std::string description = options.surface_description.empty() ? "surface" : options.surface_description;
   for (char& c : description)
     if (c == '\n' || c == '\r') c = ' ';
-  return std::string("# MSMS-format ") + what + " of the " + description + " (molsurf " MOLSURF_VERSION
-         ": a union of atom spheres, every face a contact face)\n";
+  return std::string("# MSMS-format ") + what + " of the " + description + " (molsurf " MOLSURF_VERSION +
+         (options.atoms.empty() ? ")\n" : ": a union of atom spheres, every face a contact face)\n");
 }
 
 std::size_t sphere_count(const Mesh& mesh, std::span<const Atom> atoms) {
@@ -233,9 +239,9 @@ void for_each_row(const path& file, std::string text, const char* what, OnRow on
 
 void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const PairPaths paths = pair_paths(file);
-  const VertexPatches patches = vertex_patches(mesh);
+  const std::vector<VertexPatches> patches = vertex_patches(mesh);
   const std::vector<Vec3> normals = msms_normals(mesh, options.atoms, patches);
-  const std::vector<long long> analytical = analytical_numbers(mesh, patches);
+  const std::vector<long long> analytical = analytical_numbers(patches);
   const std::vector<long long> closest = closest_spheres(mesh, options.atoms);
   const std::size_t spheres = sphere_count(mesh, options.atoms);
   // Names only when the atoms have some, as MSMS writes them only when its input names them.
