@@ -28,6 +28,7 @@ struct SurfaceCommand {
   bool skip_cleanup = false;
   std::filesystem::path json, per_atom, per_residue;
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
+  double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;
   // Set by add_options: whether an option was given at all (an empty value, as in
   // `-o ""`, is then an error rather than the default).

@@ -74,6 +74,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->check(whole_number(1, 100'000'000'000))
       ->capture_default_str()
       ->group(sphere);
+  app.add_option("--max-memory", max_memory_gb,
+                 "Refuse to start the union when the surface would need more memory than this many GB\n"
+                 "(estimated from a sample of atoms, about 360 bytes per face); default: this machine's memory")
+      ->check(finite_number(0, 1e9, true))
+      ->group(sphere);
   app.add_flag("--inscribed", [this](std::int64_t) { spheres.area_corrected = false; },
                "Put icosphere vertices on the true spheres (inscribed polyhedra: about 1 % less volume).\n"
                "Default: each icosphere scaled so its area equals the sphere's (docs/accuracy.md)")
@@ -200,6 +205,7 @@ int SurfaceCommand::run() const {
   compute_options.cleanup = !skip_cleanup;
   compute_options.check_self_intersections = !skip_check;
   compute_options.max_sphere_faces = max_faces;
+  if (max_memory_gb > 0) compute_options.max_memory = static_cast<std::uint64_t>(max_memory_gb * 1e9);
   compute_options.source = structure;
   const ComputedSurface computed = [&] {
     try {
