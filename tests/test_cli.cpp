@@ -341,6 +341,23 @@ TEST(Cli, HugeSphereCountsAreRefusedUpFrontAndTheLimitCanBeRaised) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
+TEST(Cli, ASurfaceTooLargeForTheMemoryLimitIsRefusedBeforeAnythingIsWritten) {
+  TempDir dir;
+  const std::string crambin = "'" + kData + "/pdb/1crn.pdb'";
+  auto r = run_molsurf("-q --max-memory 0.001 -o c.vtp " + crambin, dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("1crn.pdb: the surface would have about"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "c.vtp"));
+  for (const char* bad : {"0", "-1", "nan", "1e12"}) {
+    r = run_molsurf(std::string("--max-memory ") + bad + " " + crambin, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << bad << r.err;
+  }
+  r = run_molsurf("-q --max-memory 1 -o c.vtp " + crambin, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 TEST(Cli, ThreadCountIsBounded) {
   TempDir dir;
   write_small_structure(dir.path() / "s.xyzr");
