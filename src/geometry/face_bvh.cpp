@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "common/parallel_exceptions.hpp"
+#include "common/parallel_threshold.hpp"
 
 namespace molsurf::geometry {
 
@@ -178,7 +179,7 @@ void BoxBvh::build(const BoxOf& box_of, std::vector<std::uint32_t> ids) {
   const auto n = static_cast<std::int64_t>(ids.size());
 
   std::vector<SortItem> items(ids.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMinItems)
   for (std::int64_t k = 0; k < n; ++k) {
     const BoundingBox b = box_of(ids[k]);
     items[k] = {{centre(b, 0), centre(b, 1), centre(b, 2)}, ids[k]};
@@ -192,7 +193,7 @@ void BoxBvh::build(const BoxOf& box_of, std::vector<std::uint32_t> ids) {
   items_.resize(items.size());
   item_bounds_.resize(items.size());
   Builder<BoxOf> builder{box_of, items, *this};
-#pragma omp parallel
+#pragma omp parallel if (n >= kParallelMinItems)
 #pragma omp single
   builder.build(0, 1, 0, static_cast<std::uint32_t>(items.size()));
 

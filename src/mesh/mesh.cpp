@@ -1,6 +1,7 @@
 #include "molsurf/mesh.hpp"
 
 #include "mesh/topology.hpp"
+#include "common/parallel_threshold.hpp"
 
 #include <parallel/algorithm>
 
@@ -168,7 +169,7 @@ Quality mesh_quality(const Mesh& mesh) {
   // The angles in parallel, the sum in face order: the same mean for any thread count.
   std::vector<double> angle(mesh.faces.size()), aspect(mesh.faces.size());
   const auto nf = static_cast<std::int64_t>(mesh.faces.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nf >= kParallelMinItems)
   for (std::int64_t f = 0; f < nf; ++f) {
     angle[f] = min_angle_deg(mesh, static_cast<std::size_t>(f));
     aspect[f] = aspect_ratio(mesh, static_cast<std::size_t>(f));

@@ -48,6 +48,7 @@
 #include "molsurf/error.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "mesh/component_volume.hpp"
+#include "common/parallel_threshold.hpp"
 
 namespace molsurf {
 
@@ -129,7 +130,7 @@ EdgeTable build_edge_table(const Mesh& mesh, const std::vector<std::uint8_t>& to
     }
   }
   const auto nv_signed = static_cast<std::int64_t>(nv);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nv_signed >= kParallelMinItems)
   for (std::int64_t v = 0; v < nv_signed; ++v) {
     std::sort(table.uses.begin() + table.bucket_start[v], table.uses.begin() + table.bucket_start[v + 1],
               [](const EdgeUse& a, const EdgeUse& b) { return a.upper < b.upper || (a.upper == b.upper && a.face < b.face); });
@@ -192,7 +193,7 @@ void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topologic
   LowestIndices examples(max_examples);
   const auto nv_signed = static_cast<std::int64_t>(nv);
   ParallelExceptions errors;
-#pragma omp parallel reduction(+ : nonmanifold)
+#pragma omp parallel reduction(+ : nonmanifold) if (nv_signed >= kParallelMinItems)
   {
     LowestIndices local_examples(max_examples);
     std::vector<Index> nodes;                    // distinct link vertices w
@@ -268,7 +269,7 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
   const auto count = static_cast<std::int64_t>(bvh.leaf_count());
   ParallelExceptions errors;
-#pragma omp parallel reduction(+ : intersecting, contacts)
+#pragma omp parallel reduction(+ : intersecting, contacts) if (count >= kParallelMinItems / 16)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
 #pragma omp for schedule(dynamic, 1024)
@@ -460,7 +461,7 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
   // topological[f]: the face has three distinct indices; degenerate[f]: exact collinearity too.
   std::vector<std::uint8_t> topological(nf), degenerate(nf);
   const auto nf_signed = static_cast<std::int64_t>(nf);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nf_signed >= kParallelMinItems)
   for (std::int64_t f = 0; f < nf_signed; ++f) {
     topological[f] = !has_repeated_index(mesh.faces[f]);
     degenerate[f] = geometric ? geometry::is_degenerate_face(mesh, static_cast<std::size_t>(f))
