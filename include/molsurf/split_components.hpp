@@ -3,6 +3,7 @@
 // one surface loop per boundary in a mesher) need the outer surface and each cavity
 // apart. Each part is written as a closed, outward surface of its own.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -20,6 +21,17 @@ struct SurfaceComponent {
   double area = 0;
   double volume = 0;  // enclosed by this part alone: positive
 };
+
+// The components of `mesh` (faces connected through shared vertices) in the report's
+// order, without copying them: outer surfaces first, then cavities (a component of negative
+// volume, decided exactly), each kind by decreasing area, ties by lowest face index.
+struct ComponentOrder {
+  std::vector<std::uint32_t> face_component;   // per face: its component's position in the order
+  std::vector<SurfaceComponent::Kind> kind;    // per position
+  std::vector<std::size_t> number;             // per position: from 1 within its kind
+  std::vector<double> area, volume;            // per position; volume signed (cavities negative)
+};
+ComponentOrder order_components(const Mesh& mesh);
 
 // The components of `mesh` (faces connected through shared vertices) as separate meshes:
 // outer surfaces first, then cavities (a component of negative volume, decided exactly),

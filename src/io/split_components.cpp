@@ -11,7 +11,7 @@
 
 namespace molsurf {
 
-std::vector<SurfaceComponent> split_components(const Mesh& mesh) {
+ComponentOrder order_components(const Mesh& mesh) {
   const Components parts = connected_components(mesh);
   const ComponentVolumes volumes = component_volumes(mesh, parts);
   // Areas summed as measure_components() sums them, so both sort alike.
@@ -24,29 +24,46 @@ std::vector<SurfaceComponent> split_components(const Mesh& mesh) {
     if (is_cavity(a) != is_cavity(b)) return !is_cavity(a);
     return area[a] > area[b];
   });
+  ComponentOrder out;
+  std::vector<std::uint32_t> position(parts.count);
+  std::size_t outer_count = 0, cavity_count = 0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t c = order[k];
+    position[c] = static_cast<std::uint32_t>(k);
+    out.kind.push_back(is_cavity(c) ? SurfaceComponent::Kind::cavity : SurfaceComponent::Kind::outer);
+    out.number.push_back(is_cavity(c) ? ++cavity_count : ++outer_count);
+    out.area.push_back(area[c]);
+    out.volume.push_back(volumes.volume[c]);
+  }
+  out.face_component.resize(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) out.face_component[f] = position[parts.face_component[f]];
+  return out;
+}
 
+std::vector<SurfaceComponent> split_components(const Mesh& mesh) {
+  const ComponentOrder order = order_components(mesh);
+  const std::size_t count = order.kind.size();
   // Faces grouped by component (in face order within each), so that each part is built
   // from its own faces: a surface with thousands of cavities costs one pass, not one per part.
-  std::vector<std::size_t> first(parts.count + 1, 0);
-  for (std::uint32_t c : parts.face_component) ++first[c + 1];
-  for (std::size_t c = 0; c < parts.count; ++c) first[c + 1] += first[c];
+  std::vector<std::size_t> first(count + 1, 0);
+  for (std::uint32_t c : order.face_component) ++first[c + 1];
+  for (std::size_t c = 0; c < count; ++c) first[c + 1] += first[c];
   std::vector<std::size_t> faces_by_component(mesh.faces.size());
   {
     std::vector<std::size_t> next(first.begin(), first.end() - 1);
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) faces_by_component[next[parts.face_component[f]]++] = f;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) faces_by_component[next[order.face_component[f]]++] = f;
   }
 
   std::vector<SurfaceComponent> out;
-  out.reserve(parts.count);
+  out.reserve(count);
   std::vector<Index> renumber(mesh.vertices.size(), ~Index{0});
   std::vector<Index> used;
-  std::size_t outer_count = 0, cavity_count = 0;
-  for (std::size_t c : order) {
+  for (std::size_t c = 0; c < count; ++c) {
     SurfaceComponent part;
-    part.kind = is_cavity(c) ? SurfaceComponent::Kind::cavity : SurfaceComponent::Kind::outer;
-    part.number = is_cavity(c) ? ++cavity_count : ++outer_count;
-    part.area = area[c];
-    part.volume = std::abs(volumes.volume[c]);
+    part.kind = order.kind[c];
+    part.number = order.number[c];
+    part.area = order.area[c];
+    part.volume = std::abs(order.volume[c]);
     const std::span<const std::size_t> faces(faces_by_component.data() + first[c], first[c + 1] - first[c]);
     // Vertices in their original relative order (not by first use), so a part's rows
     // follow the whole surface's.

@@ -56,7 +56,7 @@ def test_meshio_reads_what_the_report_says(run_molsurf, data_dir, name, options,
     assert face_area.min() > 0
 
 
-@pytest.mark.parametrize("name,options,key", [("t.ply", ["--ascii"], "tag"), ("t.msh", [], "gmsh:physical")])
+@pytest.mark.parametrize("name,options,key", [("t.ply", ["--ascii"], "tag"), ("t.msh", [], "atom")])
 def test_meshio_gets_the_atom_of_each_face(run_molsurf, data_dir, name, options, key):
     run = run_molsurf(data_dir / "pdb" / "1crn.pdb", name, *options)
     mesh = read(run.output)
@@ -65,10 +65,25 @@ def test_meshio_gets_the_atom_of_each_face(run_molsurf, data_dir, name, options,
     tags = np.concatenate([data for block, data in zip(mesh.cells, mesh.cell_data[key])
                            if block.type == "triangle"]).astype(int)
     assert len(tags) == len(faces)
-    if key == "tag":
-        # The area of the faces of each atom is that atom's area in --per-atom.
-        per_atom = np.bincount(tags, weights=area(np.asarray(mesh.points, float), faces),
-                               minlength=len(run.atom_area))
-        assert per_atom == pytest.approx(np.array(run.atom_area), abs=6e-5)
-    else:
-        assert tags.min() >= 1  # gmsh needs positive physical tags
+    if key == "atom":
+        tags = tags - 1  # gmsh's $ElementData "atom" counts from 1
+    # The area of the faces of each atom is that atom's area in --per-atom.
+    per_atom = np.bincount(tags, weights=area(np.asarray(mesh.points, float), faces),
+                           minlength=len(run.atom_area))
+    assert per_atom == pytest.approx(np.array(run.atom_area), abs=6e-5)
+
+
+def test_meshio_gets_one_gmsh_physical_group_per_component(run_molsurf, data_dir):
+    run = run_molsurf(data_dir / "pdb" / "1crn.pdb", "c.msh")
+    mesh = read(run.output)
+    physical = np.concatenate([data for block, data in zip(mesh.cells, mesh.cell_data["gmsh:physical"])
+                               if block.type == "triangle"]).astype(int)
+    components = run.report["components"]
+    assert sorted(set(physical)) == list(range(1, len(components) + 1))
+    # Named as in the report: the outer surface first, then the cavities by decreasing area.
+    names = {int(tag): name for name, (tag, dim) in mesh.field_data.items() if dim == 2}
+    assert names[1] == "outer"
+    assert [names[k] for k in range(2, len(components) + 1)] == [f"cavity-{k}" for k in range(1, len(components))]
+    points = np.asarray(mesh.points, float)
+    for k, component in enumerate(components, start=1):
+        assert area(points, triangles(mesh)[physical == k]).sum() == pytest.approx(component["area"], rel=1e-9)
