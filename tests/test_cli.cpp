@@ -9,6 +9,7 @@
 #include "mesh_fixtures.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
+#include "molsurf/volume_mesh.hpp"
 
 namespace molsurf {
 namespace {
@@ -356,6 +357,31 @@ TEST(Cli, ASurfaceTooLargeForTheMemoryLimitIsRefusedBeforeAnythingIsWritten) {
   }
   r = run_molsurf("-q --max-memory 1 -o c.vtp " + crambin, dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(Cli, VolumeMeshIsWrittenWithTheSurfaceOrRefusedBeforeAnyWork) {
+  TempDir dir;
+  write_small_structure(dir.path() / "s.xyzr");
+  auto r = run_molsurf("--volume-mesh v.vtk -o s.vtp s.xyzr", dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("must end in .msh"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "s.vtp"));
+  r = run_molsurf("--volume-mesh s.xyzr -o s.vtp s.xyzr", dir.path());
+  EXPECT_NE(r.exit_code, 0) << r.err;  // never over the input
+  r = run_molsurf("--volume-mesh v.msh --box-margin 5 -o s.vtp s.xyzr", dir.path());
+  if (!volume_mesh_available()) {
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("without gmsh"), std::string::npos) << r.err;
+    return;
+  }
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("volume mesh"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("solvent"), std::string::npos) << r.out;
+  std::ifstream in(dir.path() / "v.msh");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"solvent\""), std::string::npos);
+  EXPECT_NE(text.find("\"box\""), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "s.vtp"));
 }
 
 TEST(Cli, ThreadCountIsBounded) {

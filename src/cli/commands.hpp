@@ -36,6 +36,12 @@ struct SurfaceCommand {
   const CLI::Option* json_option = nullptr;
   const CLI::Option* per_atom_option = nullptr;
   const CLI::Option* per_residue_option = nullptr;
+  // The volume mesh around the molecule (paper §3.4).
+  std::filesystem::path volume_mesh;
+  double box_margin = 10;
+  double volume_size = 0;
+  bool fill_inside = false;
+  const CLI::Option* volume_option = nullptr;
 
   void add_options(CLI::App& app);
   int run() const;

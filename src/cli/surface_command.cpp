@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "molsurf/output_files.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/split_components.hpp"
+#include "molsurf/volume_mesh.hpp"
 #include "molsurf/written_check.hpp"
 #include "cli/validators.hpp"
 
@@ -79,6 +81,23 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "(estimated from a sample of atoms, about 360 bytes per face); default: this machine's memory")
       ->check(finite_number(0, 1e9, true))
       ->group(sphere);
+  auto* volume_group = "Volume mesh around the molecule (paper section 3.4)";
+  volume_option = app.add_option("--volume-mesh", volume_mesh,
+                                 "Also write tetrahedra filling the space between the surface and a box, as gmsh\n"
+                                 ".msh 2.2 (regions and boundaries tagged; docs/volume_mesh.md)")
+                      ->group(volume_group);
+  app.add_option("--box-margin", box_margin, "Angstrom between the molecule's bounding box and the outer box")
+      ->check(finite_number(0, 1e6, true))
+      ->capture_default_str()
+      ->group(volume_group);
+  app.add_option("--volume-size", volume_size,
+                 "Tetrahedron size at the box in angstrom (default: the margin / 3, at least 1); near the\n"
+                 "molecule the tetrahedra follow its triangles")
+      ->check(finite_number(0, 1e6, true))
+      ->group(volume_group);
+  app.add_flag("--fill-inside", fill_inside,
+               "Also fill the molecule's inside: the solute region, and each cavity as its own region")
+      ->group(volume_group);
   app.add_flag("--inscribed", [this](std::int64_t) { spheres.area_corrected = false; },
                "Put icosphere vertices on the true spheres (inscribed polyhedra: about 1 % less volume).\n"
                "Default: each icosphere scaled so its area equals the sphere's (docs/accuracy.md)")
@@ -150,6 +169,23 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+std::string format_volume_mesh_report(const VolumeMeshReport& v, const std::filesystem::path& file) {
+  char line[256];
+  std::string text;
+  std::snprintf(line, sizeof line, "  volume mesh           %s: %zu tetrahedra, %zu nodes (%.2f s)\n", file.string().c_str(),
+                v.tetrahedra, v.nodes, v.seconds);
+  text += line;
+  for (const VolumeRegion& r : v.regions) {
+    std::snprintf(line, sizeof line, "    %-19s %zu tetrahedra, volume %.2f A^3 (physical %d)\n", r.name.c_str(),
+                  r.tetrahedra, r.volume, r.physical);
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "    quality             min dihedral %.2f deg; radius ratio min %.3f, median %.3f\n",
+                v.min_dihedral_deg, v.min_radius_ratio, v.median_radius_ratio);
+  text += line;
+  return text;
+}
+
 }  // namespace
 
 int SurfaceCommand::run() const {
@@ -164,6 +200,14 @@ int SurfaceCommand::run() const {
   if (json_option->count() > 0) outputs.push_back({json, "--json"});
   if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
   if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
+  if (volume_option->count() > 0) {
+    outputs.push_back({volume_mesh, "--volume-mesh", true});
+    if (volume_mesh.extension() != ".msh")
+      throw Error("--volume-mesh: " + volume_mesh.string() + " must end in .msh (gmsh 2.2, the one format written)");
+    if (!volume_mesh_available())
+      throw Error("--volume-mesh: this molsurf was built without gmsh, which makes the volume mesh "
+                  "(Debian: libgmsh-dev; build again)");
+  }
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
   // Reject an unknown extension, and options that do not apply to it, before any work.
@@ -278,6 +322,18 @@ int SurfaceCommand::run() const {
   } else {
     files.add_mesh(out, surface, written.options);
   }
+  std::optional<VolumeMeshReport> volume;
+  if (!volume_mesh.empty()) {
+    if (!quiet) text << "volume mesh ..." << std::flush;
+    VolumeMeshOptions volume_options;
+    volume_options.box_margin = box_margin;
+    volume_options.box_size = volume_size;
+    volume_options.fill_inside = fill_inside;
+    VolumeMesh made = mesh_volume(surface, volume_options);
+    if (!quiet) text << "\r";
+    volume = made.report;
+    files.add_text(volume_mesh, std::move(made.msh));
+  }
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, measures.atom_area));
   if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, measures.atom_area));
   report.seconds.write = computed.seconds.measures + seconds_since(clock);
@@ -285,6 +341,7 @@ int SurfaceCommand::run() const {
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!quiet) {
     text << "\n" << format_surface_report(report);
+    if (volume) text << format_volume_mesh_report(*volume, volume_mesh);
     std::string list;
     for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
     text << "written: " << list << "\n";
