@@ -11,6 +11,10 @@ struct CleanupOptions {
   double min_angle_deg = 5;       // faces with a smaller angle are distorted
   int passes = 6;
   double max_area_change = 1e-3;  // relative; changes stop before exceeding it
+  // Edges shorter than this part of the median edge are collapsed afterwards (where the
+  // rules allow), whatever their faces' angles: meshers' floating-point boundary recovery
+  // takes the faces around them for overlapping. 0: no such pass.
+  double min_edge_fraction = 0.02;
 };
 
 struct CleanupStats {
@@ -20,6 +24,7 @@ struct CleanupStats {
   std::size_t flips = 0;
   std::size_t moves = 0;    // vertices moved (tangential smoothing around a remaining sliver)
   std::size_t refused = 0;  // distorted faces no valid change improved (once per pass)
+  std::size_t short_edges_before = 0, short_edges_after = 0;  // under min_edge_fraction of the median
 };
 
 // Each pass takes the distorted faces, worst first, and makes the best valid change
@@ -38,7 +43,10 @@ struct CleanupStats {
 // different spheres, meet) stay where they are when that does as well: among changes
 // that reach min_angle_deg, those that keep them (a seam vertex merging into a vertex
 // on the same seams, a flip within one sphere) come first. A flip needs the two faces
-// within 26 degrees of coplanar, 20 across a seam. Deterministic.
+// within 26 degrees of coplanar, 20 across a seam. Last, edges shorter than
+// min_edge_fraction of the median edge are collapsed, shortest first, by the same rules,
+// except that the worst angle need only not get worse than it was or than min_angle_deg.
+// Deterministic.
 CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options = {});
 
 }  // namespace molsurf

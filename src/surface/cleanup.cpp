@@ -118,6 +118,7 @@ class Cleaner {
       }
       if (done == 0) break;
     }
+    if (options_.min_edge_fraction > 0) shorten_edges(stats);
     stats.collapses = collapses_;
     stats.flips = flips_;
     stats.moves = moves_;
@@ -770,6 +771,70 @@ class Cleaner {
         return true;
       }
     return false;
+  }
+
+  // Edges far shorter than the surface's typical edge (under min_edge_fraction of the
+  // median) are collapsed, shortest first, even where their faces' angles are fine: a
+  // mesher's boundary recovery (gmsh's, tetgen's) works in floating point and takes the
+  // faces around such an edge for overlapping. A collapse here may not make the worst
+  // angle it touches worse than it was or than the angle target; every other rule of an
+  // edit holds (link condition, no face turned, budgets, the exact crossing test).
+  std::vector<std::pair<double, std::array<Index, 2>>> short_edges(double floor) const {
+    std::vector<std::pair<double, std::array<Index, 2>>> out;
+    for (std::uint32_t f = 0; f < m_.faces.size(); ++f) {
+      if (!alive_[f]) continue;
+      const Triangle& t = m_.faces[f];
+      for (int i = 0; i < 3; ++i) {
+        const Index a = t[i], b = t[(i + 1) % 3];
+        if (a > b) continue;  // each edge once, from the face that runs it upward
+        const double length = norm(m_.vertices[b] - m_.vertices[a]);
+        if (length < floor) out.push_back({length, {a, b}});
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  void shorten_edges(CleanupStats& stats) {
+    std::vector<double> lengths;
+    lengths.reserve(m_.faces.size() * 3 / 2);
+    for (std::uint32_t f = 0; f < m_.faces.size(); ++f) {
+      if (!alive_[f]) continue;
+      const Triangle& t = m_.faces[f];
+      for (int i = 0; i < 3; ++i)
+        if (t[i] < t[(i + 1) % 3]) lengths.push_back(norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]));
+    }
+    if (lengths.empty()) return;
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    const double floor = options_.min_edge_fraction * lengths[lengths.size() / 2];
+    stats.short_edges_before = short_edges(floor).size();
+    for (int pass = 0; pass < options_.passes; ++pass) {
+      std::size_t done = 0;
+      for (const auto& [length, edge] : short_edges(floor)) {
+        const auto [a, b] = edge;
+        if (!(norm(m_.vertices[b] - m_.vertices[a]) < floor)) continue;  // an earlier collapse moved it
+        const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
+        if (on_edge.size() != 2 || !link_condition(m_, faces_of_[a], faces_of_[b], on_edge, a, b)) continue;
+        const std::vector<std::int32_t> tags_a = tags_of(a), tags_b = tags_of(b);
+        auto within = [](const std::vector<std::int32_t>& x, const std::vector<std::int32_t>& y) {
+          return std::includes(y.begin(), y.end(), x.begin(), x.end());
+        };
+        std::vector<Edit> options;
+        auto add = [&](Index u, Index v, const Vec3& target, int rank) {
+          Edit e = collapse(u, v, on_edge, target);
+          e.rank = rank;
+          if (evaluate(e, false) && e.after >= std::min(e.before, options_.min_angle_deg) && e.after > kSmallestNewAngle)
+            options.push_back(std::move(e));
+        };
+        const Vec3 pa = m_.vertices[a], pb = m_.vertices[b];
+        add(a, b, pa, within(tags_b, tags_a) ? 0 : 1);
+        add(b, a, pb, within(tags_a, tags_b) ? 0 : 1);
+        add(a, b, 0.5 * (pa + pb), tags_a == tags_b ? 0 : 1);
+        if (try_best(options)) ++done;
+      }
+      if (done == 0) break;
+    }
+    stats.short_edges_after = short_edges(floor).size();
   }
 
   void compact() {
