@@ -4,6 +4,7 @@ closed component of the surface is its own discrete surface (elementary and phys
 hole of the solvent region. The failures this guards against: with one surface per atom,
 gmsh's boundary recovery stopped on an assertion (2hhb), and with the cavity in the hole's
 loop the region came out empty (1crn, "No elements in volume 1")."""
+import json
 import shutil
 import subprocess
 
@@ -61,3 +62,32 @@ def test_gmsh_fills_a_box_around_crambin_which_has_a_cavity(run_molsurf, data_di
 def test_gmsh_fills_a_box_around_haemoglobin(run_molsurf, data_dir):
     run = run_molsurf(data_dir / "pdb" / "2hhb.pdb", "h.msh")
     mesh_solvent(run, 6)
+
+
+def test_gmsh_and_meshio_load_the_volume_mesh(molsurf_cli, data_dir, tmp_path):
+    """`--volume-mesh`: gmsh reads the file back, and meshio sees the tetrahedra of each region
+    and the triangles of each boundary under the physical tags docs/volume_mesh.md gives."""
+    volume = tmp_path / "v.msh"
+    result = subprocess.run([molsurf_cli, str(data_dir / "pdb" / "1crn.pdb"), "-q", "-o", str(tmp_path / "s.vtp"),
+                             "--volume-mesh", str(volume), "--box-margin", "6", "--json", str(tmp_path / "r.json")],
+                            capture_output=True, text=True, timeout=600)
+    if "built without gmsh" in result.stderr:
+        pytest.skip("this molsurf was built without gmsh")
+    assert result.returncode == 0, result.stderr
+    check = subprocess.run([gmsh, str(volume), "-0", "-o", str(tmp_path / "again.msh")], capture_output=True,
+                           text=True, timeout=600)
+    assert check.returncode == 0 and "Error" not in check.stdout, check.stdout[-2000:]
+    mesh = meshio.read(volume)
+    names = {name: int(tag) for name, (tag, dim) in mesh.field_data.items()}
+    assert {"solvent", "outer", "box"} <= set(names)
+    tets = [data for block, data in zip(mesh.cells, mesh.cell_data["gmsh:physical"]) if block.type == "tetra"]
+    assert len(tets) > 0 and all((t == names["solvent"]).all() for t in tets)
+    points = np.asarray(mesh.points, float)
+    corners = np.concatenate([block.data for block in mesh.cells if block.type == "tetra"])
+    a, b, c, d = (points[corners[:, k]] for k in range(4))
+    volume_sum = np.abs(np.einsum("ij,ij->i", b - a, np.cross(c - a, d - a))).sum() / 6
+    low, high = points.min(axis=0), points.max(axis=0)
+    # The solvent is the box minus what the outer surface encloses (the cavities included).
+    outer = [c for c in json.loads((tmp_path / "r.json").read_text())["components"] if c["kind"] == "outer"]
+    expected = np.prod(high - low) - sum(c["volume"] for c in outer)
+    assert volume_sum == pytest.approx(expected, rel=1e-9)
