@@ -807,10 +807,11 @@ class Cleaner {
     if (lengths.empty()) return;
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     const double floor = options_.min_edge_fraction * lengths[lengths.size() / 2];
-    stats.short_edges_before = short_edges(floor).size();
-    for (int pass = 0; pass < options_.passes; ++pass) {
+    std::vector<std::pair<double, std::array<Index, 2>>> edges = short_edges(floor);
+    stats.short_edges_before = edges.size();
+    for (int pass = 0; pass < options_.passes && !edges.empty(); ++pass) {
       std::size_t done = 0;
-      for (const auto& [length, edge] : short_edges(floor)) {
+      for (const auto& [length, edge] : edges) {
         const auto [a, b] = edge;
         if (!(norm(m_.vertices[b] - m_.vertices[a]) < floor)) continue;  // an earlier collapse moved it
         const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
@@ -833,8 +834,9 @@ class Cleaner {
         if (try_best(options)) ++done;
       }
       if (done == 0) break;
+      edges = short_edges(floor);
     }
-    stats.short_edges_after = short_edges(floor).size();
+    stats.short_edges_after = edges.size();
   }
 
   void compact() {
