@@ -1,21 +1,19 @@
 #include "molsurf/volume_mesh.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <sstream>
+#include <string>
+#include <vector>
 
-#include "molsurf/error.hpp"
 #include "io/mesh_formats.hpp"
+#include "molsurf/error.hpp"
 #include "molsurf/split_components.hpp"
 #include "volume/tetrahedron_quality.hpp"
 
 #ifdef MOLSURF_HAVE_GMSH
-#include <gmsh.h>
+#include "volume/gmsh_library.hpp"
 #endif
 
 namespace molsurf {
@@ -39,41 +37,36 @@ VolumeMesh mesh_volume(const Mesh&, const VolumeMeshOptions&) {
 
 namespace {
 
-// gmsh is one process-wide model: initialised here, finalised on every way out.
+using volume_detail::GmshArray;
+using volume_detail::GmshLibrary;
+
+// One gmsh model for the call: gmsh is initialised here and finalised on every way out.
 class GmshSession {
  public:
-  GmshSession() {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
+  explicit GmshSession(const GmshLibrary& gmsh) : gmsh_(gmsh) {
+    gmsh.call(gmsh.gmshInitialize, 0, nullptr, 0);
+    gmsh.call(gmsh.gmshOptionSetNumber, "General.Terminal", 0.0);
     // One thread: with two, gmsh 4.8's tetrahedra differed from run to run (1crn: 101 542
     // and 101 619) and took twice as long; with one the file is the same on every run.
-    gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::logger::start();
-    gmsh::model::add("molsurf");
+    gmsh.call(gmsh.gmshOptionSetNumber, "General.NumThreads", 1.0);
+    gmsh.call(gmsh.gmshLoggerStart);
+    gmsh.call(gmsh.gmshModelAdd, "molsurf");
   }
   ~GmshSession() {
-    try {
-      gmsh::logger::stop();
-      gmsh::finalize();
-    } catch (...) {  // nothing can be done about a failure to clean up
-    }
+    int ierr = 0;
+    gmsh_.gmshLoggerStop(&ierr);
+    gmsh_.gmshFinalize(&ierr);
   }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 
-  static std::string last_error() {
-    std::string message;
-    try {
-      gmsh::logger::getLastError(message);
-    } catch (...) {
-    }
-    return message;
-  }
+ private:
+  const GmshLibrary& gmsh_;
 };
 
 // The surface's components as gmsh discrete surfaces 1..C (the report's order), their
 // nodes and triangles as they are.
-void add_surface(const Mesh& surface, const ComponentOrder& order) {
+void add_surface(const GmshLibrary& gmsh, const Mesh& surface, const ComponentOrder& order) {
   const std::size_t count = order.kind.size();
   std::vector<std::vector<std::size_t>> node_tags(count), triangle_nodes(count), triangle_tags(count);
   std::vector<std::vector<double>> coordinates(count);
@@ -93,23 +86,25 @@ void add_surface(const Mesh& surface, const ComponentOrder& order) {
   }
   for (std::size_t c = 0; c < count; ++c) {
     const int tag = static_cast<int>(c + 1);
-    gmsh::model::addDiscreteEntity(2, tag);
-    gmsh::model::mesh::addNodes(2, tag, node_tags[c], coordinates[c]);
-    gmsh::model::mesh::addElementsByType(tag, 2, triangle_tags[c], triangle_nodes[c]);
+    gmsh.call(gmsh.gmshModelAddDiscreteEntity, 2, tag, static_cast<int*>(nullptr), std::size_t{0});
+    gmsh.call(gmsh.gmshModelMeshAddNodes, 2, tag, node_tags[c].data(), node_tags[c].size(), coordinates[c].data(),
+              coordinates[c].size(), static_cast<double*>(nullptr), std::size_t{0});
+    gmsh.call(gmsh.gmshModelMeshAddElementsByType, tag, 2, triangle_tags[c].data(), triangle_tags[c].size(),
+              triangle_nodes[c].data(), triangle_nodes[c].size());
   }
 }
 
 // The box's six sides as plane surfaces; their tags (gmsh chooses free ones, so any number
 // of components fits).
-std::vector<int> add_box(const BoundingBox& box, double size) {
+std::vector<int> add_box(const GmshLibrary& gmsh, const BoundingBox& box, double size) {
   std::array<int, 8> point{};
   for (int i = 0; i < 8; ++i)
-    point[i] = gmsh::model::geo::addPoint(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
-                                          i & 4 ? box.max.z : box.min.z, size);
+    point[i] = gmsh.call(gmsh.gmshModelGeoAddPoint, i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+                         i & 4 ? box.max.z : box.min.z, size, -1);
   constexpr int edge[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   std::array<int, 12> line{};
-  for (int k = 0; k < 12; ++k) line[k] = gmsh::model::geo::addLine(point[edge[k][0]], point[edge[k][1]]);
+  for (int k = 0; k < 12; ++k) line[k] = gmsh.call(gmsh.gmshModelGeoAddLine, point[edge[k][0]], point[edge[k][1]], -1);
   // Each side as a loop of the edges above (1-based); a negative entry runs against the edge.
   constexpr int side[6][4] = {{1, 6, -2, -5}, {3, 8, -4, -7}, {1, 10, -3, -9},
                               {2, 12, -4, -11}, {5, 11, -7, -9}, {6, 12, -8, -10}};
@@ -117,9 +112,23 @@ std::vector<int> add_box(const BoundingBox& box, double size) {
   for (int k = 0; k < 6; ++k) {
     std::vector<int> loop;
     for (int e : side[k]) loop.push_back(e > 0 ? line[e - 1] : -line[-e - 1]);
-    sides.push_back(gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop(loop)}));
+    int curve_loop = gmsh.call(gmsh.gmshModelGeoAddCurveLoop, loop.data(), loop.size(), -1, 0);
+    sides.push_back(gmsh.call(gmsh.gmshModelGeoAddPlaneSurface, &curve_loop, std::size_t{1}, -1));
   }
   return sides;
+}
+
+int add_surface_loop(const GmshLibrary& gmsh, std::vector<int> surfaces) {
+  return gmsh.call(gmsh.gmshModelGeoAddSurfaceLoop, surfaces.data(), surfaces.size(), -1);
+}
+
+int add_volume(const GmshLibrary& gmsh, std::vector<int> loops, int tag) {
+  return gmsh.call(gmsh.gmshModelGeoAddVolume, loops.data(), loops.size(), tag);
+}
+
+void add_physical_group(const GmshLibrary& gmsh, int dim, std::vector<int> entities, int tag, const std::string& name) {
+  gmsh.call(gmsh.gmshModelAddPhysicalGroup, dim, entities.data(), entities.size(), tag);
+  gmsh.call(gmsh.gmshModelSetPhysicalName, dim, tag, name.c_str());
 }
 
 // A physical group of the model, with the entities it holds.
@@ -129,33 +138,46 @@ struct Group {
   std::vector<int> entities;
 };
 
-std::vector<Group> physical_groups() {
+std::vector<Group> physical_groups(const GmshLibrary& gmsh) {
   std::vector<Group> groups;
   for (int dim : {2, 3}) {
-    std::vector<std::pair<int, int>> tags;
-    gmsh::model::getPhysicalGroups(tags, dim);
-    for (const auto& [d, physical] : tags) {
-      Group g{d, physical, "", {}};
-      gmsh::model::getPhysicalName(d, physical, g.name);
-      gmsh::model::getEntitiesForPhysicalGroup(d, physical, g.entities);
+    GmshArray<int> tags(gmsh);
+    gmsh.call(gmsh.gmshModelGetPhysicalGroups, &tags.data, &tags.size, dim);
+    for (std::size_t k = 0; k + 1 < tags.size; k += 2) {
+      Group g{tags[k], tags[k + 1], "", {}};
+      GmshArray<char> name(gmsh);
+      gmsh.call(gmsh.gmshModelGetPhysicalName, g.dim, g.physical, &name.data);
+      if (name.data) g.name = name.data;
+      GmshArray<int> entities(gmsh);
+      gmsh.call(gmsh.gmshModelGetEntitiesForPhysicalGroup, g.dim, g.physical, &entities.data, &entities.size);
+      g.entities.assign(entities.data, entities.data + entities.size);
       groups.push_back(std::move(g));
     }
   }
   return groups;
 }
 
+// The elements of one type on one entity: their tags and corners.
+struct Elements {
+  Elements(const GmshLibrary& gmsh, int type, int entity) : tags(gmsh), nodes(gmsh) {
+    gmsh.call(gmsh.gmshModelMeshGetElementsByType, type, &tags.data, &tags.size, &nodes.data, &nodes.size, entity,
+              std::size_t{0}, std::size_t{1});
+  }
+  GmshArray<std::size_t> tags, nodes;
+};
+
 // gmsh MSH 2.2 ASCII written here rather than by gmsh: gmsh prints coordinates with 16
 // significant digits, which does not always read back as the same double, and the
 // surface's nodes must stay exactly the surface's (shortest round-trip text).
-std::string msh_text(const std::vector<std::size_t>& node_tags, const std::vector<double>& coordinates,
-                     const std::vector<Group>& groups) {
+std::string msh_text(const GmshLibrary& gmsh, const GmshArray<std::size_t>& node_tags,
+                     const GmshArray<double>& coordinates, const std::vector<Group>& groups) {
   std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n" + std::to_string(groups.size()) + "\n";
   for (const Group& g : groups)
     text += std::to_string(g.dim) + " " + std::to_string(g.physical) + " \"" + g.name + "\"\n";
-  text += "$EndPhysicalNames\n$Nodes\n" + std::to_string(node_tags.size()) + "\n";
-  for (std::size_t k = 0; k < node_tags.size(); ++k) {
+  text += "$EndPhysicalNames\n$Nodes\n" + std::to_string(node_tags.size) + "\n";
+  for (std::size_t k = 0; k < node_tags.size; ++k) {
     text += std::to_string(node_tags[k]);
-    for (int a = 0; a < 3; ++a) {
+    for (std::size_t a = 0; a < 3; ++a) {
       text += ' ';
       mesh_io::append_number(text, coordinates[3 * k + a]);
     }
@@ -167,13 +189,12 @@ std::string msh_text(const std::vector<std::size_t>& node_tags, const std::vecto
   for (const Group& g : groups)
     for (int entity : g.entities) {
       const int type = g.dim == 2 ? 2 : 4, corners = g.dim == 2 ? 3 : 4;
-      std::vector<std::size_t> tags, nodes;
-      gmsh::model::mesh::getElementsByType(type, tags, nodes, entity);
+      const Elements e(gmsh, type, entity);
       const std::string prefix = " " + std::to_string(type) + " 2 " + std::to_string(g.physical) + " " +
                                  std::to_string(entity);
-      for (std::size_t e = 0; e < tags.size(); ++e) {
+      for (std::size_t k = 0; k < e.tags.size; ++k) {
         elements += std::to_string(++count) + prefix;
-        for (int c = 0; c < corners; ++c) elements += " " + std::to_string(nodes[corners * e + c]);
+        for (int c = 0; c < corners; ++c) elements += " " + std::to_string(e.nodes[corners * k + c]);
         elements += '\n';
       }
     }
@@ -197,129 +218,105 @@ VolumeMesh mesh_volume(const Mesh& surface, const VolumeMeshOptions& options) {
   box.max = box.max + margin;
   const double size = options.box_size > 0 ? options.box_size : std::max(1.0, options.box_margin / 3);
 
+  const GmshLibrary gmsh;
+  const GmshSession session(gmsh);
   VolumeMesh result;
-  const GmshSession session;
-  try {
-    add_surface(surface, order);
-    gmsh::model::mesh::createTopology();
-    const std::vector<int> box_sides = add_box(box, size);
-    const int box_loop = gmsh::model::geo::addSurfaceLoop(box_sides);
-    std::vector<int> component_loops;
-    for (std::size_t c = 0; c < order.kind.size(); ++c)
-      component_loops.push_back(gmsh::model::geo::addSurfaceLoop({static_cast<int>(c + 1)}));
-    // The solvent: inside the box, outside every outer surface. Cavities are inside the
-    // molecule: they bound the solute and their own regions, not the solvent.
-    std::vector<int> solvent{box_loop};
-    for (std::size_t c = 0; c < order.kind.size(); ++c)
-      if (order.kind[c] == SurfaceComponent::Kind::outer) solvent.push_back(component_loops[c]);
-    struct Planned {
-      std::string name;
-      int physical;
-      int volume;
-    };
-    std::vector<Planned> regions{{"solvent", 1, gmsh::model::geo::addVolume(solvent, 1)}};
-    if (options.fill_inside) {
-      // The solute: inside the outer surfaces, outside the cavities (a surface with more
-      // than one outer component gets one solute volume per outer surface, one physical group).
-      std::vector<int> solute_volumes;
-      int next = 2;
-      for (std::size_t c = 0; c < order.kind.size(); ++c) {
-        if (order.kind[c] != SurfaceComponent::Kind::outer) continue;
-        std::vector<int> loops{component_loops[c]};
-        if (order.number[c] == 1)
-          for (std::size_t k = 0; k < order.kind.size(); ++k)
-            if (order.kind[k] == SurfaceComponent::Kind::cavity) loops.push_back(component_loops[k]);
-        solute_volumes.push_back(gmsh::model::geo::addVolume(loops, next++));
-      }
-      gmsh::model::geo::synchronize();
-      gmsh::model::addPhysicalGroup(3, solute_volumes, 2);
-      gmsh::model::setPhysicalName(3, 2, "solute");
-      regions.push_back({"solute", 2, -1});
-      for (std::size_t c = 0; c < order.kind.size(); ++c)
-        if (order.kind[c] == SurfaceComponent::Kind::cavity) {
-          const int physical = 2 + static_cast<int>(order.number[c]);
-          const int volume = gmsh::model::geo::addVolume({component_loops[c]}, next++);
-          regions.push_back({"cavity-" + std::to_string(order.number[c]), physical, volume});
-        }
-    }
-    gmsh::model::geo::synchronize();
-    for (const Planned& r : regions)
-      if (r.volume > 0) {
-        gmsh::model::addPhysicalGroup(3, {r.volume}, r.physical);
-        gmsh::model::setPhysicalName(3, r.physical, r.name);
-      }
+  add_surface(gmsh, surface, order);
+  gmsh.call(gmsh.gmshModelMeshCreateTopology, 1, 1);
+  const std::vector<int> box_sides = add_box(gmsh, box, size);
+  const int box_loop = add_surface_loop(gmsh, box_sides);
+  std::vector<int> component_loops;
+  for (std::size_t c = 0; c < order.kind.size(); ++c)
+    component_loops.push_back(add_surface_loop(gmsh, {static_cast<int>(c + 1)}));
+  // The solvent: inside the box, outside every outer surface. Cavities are inside the
+  // molecule: they bound the solute and their own regions, not the solvent.
+  std::vector<int> solvent{box_loop};
+  for (std::size_t c = 0; c < order.kind.size(); ++c)
+    if (order.kind[c] == SurfaceComponent::Kind::outer) solvent.push_back(component_loops[c]);
+  struct Planned {
+    std::string name;
+    int physical;
+    std::vector<int> volumes;
+  };
+  std::vector<Planned> regions{{"solvent", 1, {add_volume(gmsh, solvent, 1)}}};
+  if (options.fill_inside) {
+    // The solute: inside the outer surfaces, outside the cavities (a surface with more than
+    // one outer component gets one solute volume per outer surface, one physical group).
+    Planned solute{"solute", 2, {}};
+    int next = 2;
     for (std::size_t c = 0; c < order.kind.size(); ++c) {
-      const int tag = static_cast<int>(c + 1);
-      gmsh::model::addPhysicalGroup(2, {tag}, tag);
-      const bool cavity = order.kind[c] == SurfaceComponent::Kind::cavity;
-      gmsh::model::setPhysicalName(
-          2, tag, cavity ? "cavity-" + std::to_string(order.number[c])
-                         : (order.number[c] == 1 ? std::string("outer") : "outer-" + std::to_string(order.number[c])));
+      if (order.kind[c] != SurfaceComponent::Kind::outer) continue;
+      std::vector<int> loops{component_loops[c]};
+      if (order.number[c] == 1)
+        for (std::size_t k = 0; k < order.kind.size(); ++k)
+          if (order.kind[k] == SurfaceComponent::Kind::cavity) loops.push_back(component_loops[k]);
+      solute.volumes.push_back(add_volume(gmsh, loops, next++));
     }
-    // The box after the components: fixed numbers would collide with the cavities of a
-    // large structure (7cth has more than 200).
-    const int box_physical = static_cast<int>(order.kind.size()) + 1;
-    gmsh::model::addPhysicalGroup(2, box_sides, box_physical);
-    gmsh::model::setPhysicalName(2, box_physical, "box");
-
-    gmsh::model::mesh::generate(3);
-
-    // What came out, region by region.
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coordinates, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coordinates, parametric, -1, -1, false, false);
-    std::size_t largest = 0;
-    for (std::size_t t : node_tags) largest = std::max(largest, t);
-    std::vector<Vec3> node(largest + 1);
-    for (std::size_t k = 0; k < node_tags.size(); ++k)
-      node[node_tags[k]] = {coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]};
-    VolumeMeshReport& report = result.report;
-    report.nodes = node_tags.size();
-    report.min_dihedral_deg = 180;
-    report.min_radius_ratio = 1;
-    std::vector<double> ratios;
-    for (const Planned& r : regions) {
-      VolumeRegion region{r.name, r.physical, 0, 0};
-      std::vector<int> entities;
-      gmsh::model::getEntitiesForPhysicalGroup(3, r.physical, entities);
-      for (int entity : entities) {
-        std::vector<std::size_t> tets, corners;
-        gmsh::model::mesh::getElementsByType(4, tets, corners, entity);
-        region.tetrahedra += tets.size();
-        for (std::size_t e = 0; e < tets.size(); ++e) {
-          const std::array<Vec3, 4> p{node[corners[4 * e]], node[corners[4 * e + 1]], node[corners[4 * e + 2]],
-                                      node[corners[4 * e + 3]]};
-          const volume_detail::TetrahedronShape shape = volume_detail::tetrahedron_shape(p);
-          region.volume += shape.volume;
-          report.min_dihedral_deg = std::min(report.min_dihedral_deg, shape.min_dihedral_deg);
-          report.min_radius_ratio = std::min(report.min_radius_ratio, shape.radius_ratio);
-          ratios.push_back(shape.radius_ratio);
-        }
-      }
-      if (region.tetrahedra == 0) {
-        const std::string why = GmshSession::last_error();
-        throw Error("volume mesh: gmsh made no tetrahedra in the " + r.name + " region" +
-                    (why.empty() ? std::string() : " (" + why + ")"));
-      }
-      report.tetrahedra += region.tetrahedra;
-      report.regions.push_back(region);
-    }
-    if (!ratios.empty()) {
-      std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
-      report.median_radius_ratio = ratios[ratios.size() / 2];
-    }
-    const Vec3 extent = box.max - box.min;
-    report.box_volume = extent.x * extent.y * extent.z;
-
-    result.msh = msh_text(node_tags, coordinates, physical_groups());
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw Error(std::string("volume mesh: gmsh failed: ") + e.what());
-  } catch (...) {
-    const std::string why = GmshSession::last_error();
-    throw Error("volume mesh: gmsh failed" + (why.empty() ? std::string() : ": " + why));
+    regions.push_back(std::move(solute));
+    for (std::size_t c = 0; c < order.kind.size(); ++c)
+      if (order.kind[c] == SurfaceComponent::Kind::cavity)
+        regions.push_back({"cavity-" + std::to_string(order.number[c]), 2 + static_cast<int>(order.number[c]),
+                           {add_volume(gmsh, {component_loops[c]}, next++)}});
   }
+  gmsh.call(gmsh.gmshModelGeoSynchronize);
+  for (const Planned& r : regions) add_physical_group(gmsh, 3, r.volumes, r.physical, r.name);
+  for (std::size_t c = 0; c < order.kind.size(); ++c) {
+    const bool cavity = order.kind[c] == SurfaceComponent::Kind::cavity;
+    add_physical_group(gmsh, 2, {static_cast<int>(c + 1)}, static_cast<int>(c + 1),
+                       cavity ? "cavity-" + std::to_string(order.number[c])
+                              : (order.number[c] == 1 ? std::string("outer") : "outer-" + std::to_string(order.number[c])));
+  }
+  // The box after the components: fixed numbers would collide with the cavities of a
+  // large structure (7cth has more than 200).
+  add_physical_group(gmsh, 2, box_sides, static_cast<int>(order.kind.size()) + 1, "box");
+
+  gmsh.call(gmsh.gmshModelMeshGenerate, 3);
+
+  // What came out, region by region.
+  GmshArray<std::size_t> node_tags(gmsh);
+  GmshArray<double> coordinates(gmsh), parametric(gmsh);
+  gmsh.call(gmsh.gmshModelMeshGetNodes, &node_tags.data, &node_tags.size, &coordinates.data, &coordinates.size,
+            &parametric.data, &parametric.size, -1, -1, 0, 0);
+  std::size_t largest = 0;
+  for (std::size_t k = 0; k < node_tags.size; ++k) largest = std::max(largest, node_tags[k]);
+  std::vector<Vec3> node(largest + 1);
+  for (std::size_t k = 0; k < node_tags.size; ++k)
+    node[node_tags[k]] = {coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]};
+  VolumeMeshReport& report = result.report;
+  report.nodes = node_tags.size;
+  report.min_dihedral_deg = 180;
+  report.min_radius_ratio = 1;
+  std::vector<double> ratios;
+  for (const Planned& r : regions) {
+    VolumeRegion region{r.name, r.physical, 0, 0};
+    for (int entity : r.volumes) {
+      const Elements tets(gmsh, 4, entity);
+      region.tetrahedra += tets.tags.size;
+      for (std::size_t e = 0; e < tets.tags.size; ++e) {
+        const std::array<Vec3, 4> p{node[tets.nodes[4 * e]], node[tets.nodes[4 * e + 1]], node[tets.nodes[4 * e + 2]],
+                                    node[tets.nodes[4 * e + 3]]};
+        const volume_detail::TetrahedronShape shape = volume_detail::tetrahedron_shape(p);
+        region.volume += shape.volume;
+        report.min_dihedral_deg = std::min(report.min_dihedral_deg, shape.min_dihedral_deg);
+        report.min_radius_ratio = std::min(report.min_radius_ratio, shape.radius_ratio);
+        ratios.push_back(shape.radius_ratio);
+      }
+    }
+    if (region.tetrahedra == 0) {
+      const std::string why = gmsh.last_error();
+      throw Error("volume mesh: gmsh made no tetrahedra in the " + r.name + " region" +
+                  (why.empty() ? std::string() : " (" + why + ")"));
+    }
+    report.tetrahedra += region.tetrahedra;
+    report.regions.push_back(region);
+  }
+  if (!ratios.empty()) {
+    std::nth_element(ratios.begin(), ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2), ratios.end());
+    report.median_radius_ratio = ratios[ratios.size() / 2];
+  }
+  const Vec3 extent = box.max - box.min;
+  report.box_volume = extent.x * extent.y * extent.z;
+  result.msh = msh_text(gmsh, node_tags, coordinates, physical_groups(gmsh));
   result.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
