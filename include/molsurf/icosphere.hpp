@@ -21,7 +21,4 @@ Mesh make_icosphere(const Vec3& centre, double radius, const IcosphereOptions& o
 // square angstrom of the sphere's area (MSMS's convention); at least 1.
 int frequency_for_density(double radius, double density);
 
-// Area of the unit-circumradius icosphere of frequency n (cached per n).
-double unit_icosphere_area(int frequency);
-
 }  // namespace molsurf

@@ -37,7 +37,6 @@ class Operands {
   std::uint32_t face_count() const { return face_offset_b_ + static_cast<std::uint32_t>(b_.faces.size()); }
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_vertices_.size()); }
   std::uint32_t face_offset_b() const { return face_offset_b_; }
-  std::uint32_t vertex_offset_b() const { return vertex_offset_b_; }
 
   int operand_of_face(std::uint32_t f) const { return f < face_offset_b_ ? 0 : 1; }
   int operand_of_vertex(std::uint32_t v) const { return v < vertex_offset_b_ ? 0 : 1; }

@@ -288,7 +288,6 @@ EnvelopeSelection select_outer_envelope(const Operands& ops, const Arrangement& 
     for (const Arrangement::Partner& partner : arr.coplanar_partners[subs[s].face])
       if (inside_partner(ops, arr, subs[s], partner.face)) {
         live[s] = 0;
-        ++result.coincident_dropped;
         break;
       }
   }
@@ -355,7 +354,6 @@ EnvelopeSelection select_outer_envelope(const Operands& ops, const Arrangement& 
     const std::uint8_t seen = flood.seen(s);
     if (seen == 0) continue;
     result.keep[s] = seen == 2 ? Keep::keep_flipped : Keep::keep;
-    ++result.kept_faces;
     result.two_sided_faces += seen == 3;
   }
   return result;

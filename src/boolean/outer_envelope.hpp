@@ -33,8 +33,6 @@ struct EnvelopeSelection {
   std::vector<Keep> keep;             // per sub-face: drop, keep (outside is the normal side), or flipped
   std::size_t components = 0;         // edge-connected sets of pieces
   std::size_t components_kept = 0;    // those on the envelope (not enclosed)
-  std::size_t coincident_dropped = 0; // b's copies of coincident pieces
-  std::size_t kept_faces = 0;
   std::size_t two_sided_faces = 0;    // kept, seen from both sides (parts of open sheets)
 };
 

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   CheckCommand check;
   CLI::App* check_app = app.add_subcommand(
       "check",
-      "Read any mesh (.stl .off .ply .obj .vtk .vtp) and report whether it is a valid closed surface:\n"
+      "Read any mesh (.vtp .vtk .ply .off .stl .obj .vert/.face .msh) and report whether it is a valid closed surface:\n"
       "closed, edge- and vertex-manifold, consistently oriented outward, no degenerate face and\n"
       "no self-intersection (decided with exact predicates). Exit status 0 only for a valid surface.");
   check.add_options(*check_app);

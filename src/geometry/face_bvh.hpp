@@ -48,7 +48,6 @@ class BoxBvh {
   // Item ids in leaf order: neighbours in space are neighbours here, so queries made in
   // this order walk the same nodes one after another.
   std::span<const std::uint32_t> leaf_order() const { return items_; }
-  std::size_t node_count() const { return node_count_; }
 
   // Calls visit(item_id) for every item whose box overlaps `query` (any order).
   template <class Visit>

@@ -192,6 +192,5 @@ void check_vertex_coordinates(const Mesh& mesh, const path& file) {
   }
 }
 
-bool host_is_little_endian() { return std::endian::native == std::endian::little; }
 
 }  // namespace molsurf::mesh_io

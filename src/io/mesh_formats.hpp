@@ -102,7 +102,4 @@ void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t ver
 // readers do (coordinate_range.hpp); "vertex N of M" counts from 1 in file order.
 void check_vertex_coordinates(const Mesh& mesh, const path& file);
 
-// Little-endian helpers for binary formats (the host may be either).
-bool host_is_little_endian();
-
 }  // namespace molsurf::mesh_io

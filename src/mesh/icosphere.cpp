@@ -92,7 +92,6 @@ Mesh make_unit_icosphere(int n) {
 
 }  // namespace
 
-double unit_icosphere_area(int frequency) { return surface_area(make_unit_icosphere(frequency)); }
 
 Mesh make_icosphere(const Vec3& centre, double radius, const IcosphereOptions& options) {
   if (options.frequency < 1) throw std::invalid_argument("icosphere frequency must be at least 1");
