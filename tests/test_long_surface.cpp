@@ -28,7 +28,7 @@ TEST_P(Structures, ValidSurface) {
   o.spheres.density = density;
   o.spheres.probe = probe;
   // As `molsurf` does, a surface this machine cannot hold is refused before the pass (the
-  // capsid at density 4, probe 0: about 128 M faces, 46 GB); here that is a skip, not a pass.
+  // capsid at density 4, probe 0: about 128 M faces, 38 GB); here that is a skip, not a pass.
   struct TooLarge {
     SurfaceSizeEstimate estimate;
   };

@@ -25,9 +25,9 @@ inline constexpr std::uint64_t kMaxFacesPerSphere = 20 * 200 * 200;
 
 // The whole job's peak memory (union, cleanup, check, write) per face of the union before
 // cleanup, as resident memory over those faces: 2btv at probe 0, density 4 (22.9 M faces,
-// 6.9 GB) and the capsid at the defaults give about 300 bytes (docs/performance.md);
-// rounded up.
-inline constexpr std::uint64_t kBytesPerSurfaceFace = 360;
+// 5.2 GB) gives 226 bytes, the capsid at the defaults (11.5 M faces, 2.8 GB) 246
+// (docs/performance.md); rounded up.
+inline constexpr std::uint64_t kBytesPerSurfaceFace = 300;
 
 // The memory this process may use: the machine's physical memory, or its control group's
 // limit (cgroup v2 memory.max) when that is lower.

@@ -78,7 +78,7 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->group(sphere);
   app.add_option("--max-memory", max_memory_gb,
                  "Refuse to start the union when the surface would need more memory than this many GB\n"
-                 "(estimated from a sample of atoms, about 360 bytes per face); default: this machine's memory")
+                 "(estimated from a sample of atoms, about 300 bytes per face); default: this machine's memory")
       ->check(finite_number(0, 1e9, true))
       ->group(sphere);
   auto* volume_group = "Volume mesh around the molecule (paper section 3.4)";
