@@ -322,8 +322,8 @@ TEST(Cleanup, MeetsTheQualityTargetsOnCrambin) {
   EXPECT_TRUE(again.vertices == r.mesh.vertices);
 }
 
-// The cleaned surface does not depend on the thread count (the scan for distorted faces
-// and the index's boxes run in parallel; the edits in their fixed order).
+// The cleaned surface does not depend on the thread count (the scan for distorted faces,
+// the index's boxes and the edits, region by region, run in parallel).
 TEST(Cleanup, GivesTheSameSurfaceOnOneAndTwoThreads) {
   const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
   const Mesh raw = solvent_accessible_surface(s.atoms, {}).mesh;

@@ -46,7 +46,9 @@ struct CleanupStats {
 // within 26 degrees of coplanar, 20 across a seam. Last, edges shorter than
 // min_edge_fraction of the median edge are collapsed, shortest first, by the same rules,
 // except that the worst angle need only not get worse than it was or than min_angle_deg.
-// Deterministic.
+// The edits of a pass run in parallel, region by region (cells of a coarse grid far enough
+// apart that no two edits made at once touch or read the same faces), each region's
+// faces worst first; the result does not depend on the thread count.
 CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options = {});
 
 }  // namespace molsurf

@@ -10,6 +10,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include <omp.h>
+
+#include "common/parallel_exceptions.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/topology.hpp"
@@ -46,102 +49,125 @@ struct Edit {
   int rank = 0;  // 0: the seams (where spheres meet) stay where they are; 1: they move a little
 };
 
-class Cleaner {
- public:
+// What every worker of the cleanup shares: the mesh and what is kept per face and vertex.
+// Workers that run at the same time touch only faces and vertices in regions far apart
+// (see Sweep), so nothing here is locked.
+struct CleanupShared {
   // `area`: the mesh's surface area, which the caller has measured.
-  Cleaner(Mesh& m, const CleanupOptions& options, double area) : m_(m), options_(options), alive_(m.faces.size(), 1) {
-    faces_of_.resize(m.vertices.size());
+  CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area) : m(mesh), options(opts), alive(mesh.faces.size(), 1) {
+    faces_of.resize(m.vertices.size());
     for (std::uint32_t f = 0; f < m.faces.size(); ++f)
-      for (Index v : m.faces[f]) faces_of_[v].push_back(f);
+      for (Index v : m.faces[f]) faces_of[v].push_back(f);
     double total = 0;
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
       const Triangle& t = m.faces[f];
       total += norm(m.vertices[t[1]] - m.vertices[t[0]]) + norm(m.vertices[t[2]] - m.vertices[t[1]]);
     }
     const double mean_edge = m.faces.empty() ? 1 : total / (2 * m.faces.size());
-    grid_ = std::make_unique<CleanupFaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
-    seen_.assign(m.faces.size(), 0);
-    angle_.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
-    area_.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
-    area_budget_ = options.max_area_change * area;
+    grid = std::make_unique<CleanupFaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
+    angle.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
+    face_area.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
+    area_budget = options.max_area_change * area;
     // Edits keep the topology, so a face stays in its component.
     Components components = connected_components(m);
-    component_of_ = std::move(components.face_component);
-    component_volume_.assign(components.count, 0);
+    component_of = std::move(components.face_component);
+    component_volume.assign(components.count, 0);
     std::vector<Index> origin(components.count, kNoVertex);
     for (std::uint32_t f = 0; f < m.faces.size(); ++f) {
       const Triangle& t = m.faces[f];
-      Index& o = origin[component_of_[f]];
+      Index& o = origin[component_of[f]];
       if (o == kNoVertex) o = t[0];
-      component_volume_[component_of_[f]] += tetrahedron_volume(m.vertices[o], m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
+      component_volume[component_of[f]] += tetrahedron_volume(m.vertices[o], m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
     }
-    initial_volume_ = component_volume_;
+    initial_volume = component_volume;
   }
 
-  void run(CleanupStats& stats) {
-    // A margin of a millionth, far above the rounding of atan2 and of the tangent.
-    const double tan_goal = std::tan(options_.min_angle_deg * std::numbers::pi / 180) * (1 + 1e-6);
-    // The first pass measures every face; a later one only the faces the one before
-    // listed or changed (touched_): no other face's corners moved, so its angle holds.
-    std::vector<std::pair<double, std::uint32_t>> distorted;
-    for (int pass = 0; pass < options_.passes; ++pass) {
-      if (pass == 0) {
-        // In parallel, atan2 only where the tangent leaves it in doubt; in face order.
-        std::vector<double> angle(m_.faces.size());
-        const auto nf = static_cast<std::int64_t>(m_.faces.size());
-#pragma omp parallel for schedule(static)
-        for (std::int64_t f = 0; f < nf; ++f) {
-          const auto face = static_cast<std::uint32_t>(f);
-          angle[f] = alive_[f] && !surely_at_least(face, tan_goal) ? min_angle(face) : 180;
-        }
-        for (std::uint32_t f = 0; f < m_.faces.size(); ++f)
-          if (alive_[f] && angle[f] < options_.min_angle_deg) distorted.emplace_back(angle[f], f);
-      } else {
-        for (const auto& listed : distorted) touched_.push_back(listed.second);
-        std::sort(touched_.begin(), touched_.end());
-        touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
-        distorted.clear();
-        for (std::uint32_t f : touched_)
-          if (alive_[f])
-            if (const double angle = min_angle(f); angle < options_.min_angle_deg) distorted.emplace_back(angle, f);
-      }
-      touched_.clear();
-      if (distorted.empty()) break;
-      std::sort(distorted.begin(), distorted.end());
-      std::size_t done = 0;
-      for (const auto& [angle, f] : distorted) {
-        if (!alive_[f] || min_angle(f) >= options_.min_angle_deg) continue;
-        if (improve_face(f))
-          ++done;
-        else
-          ++stats.refused;
-      }
-      if (done == 0) break;
-    }
-    if (options_.min_edge_fraction > 0) shorten_edges(stats);
-    stats.collapses = collapses_;
-    stats.flips = flips_;
-    stats.moves = moves_;
-    if (collapses_ > 0) compact();
+  static double tetrahedron_volume(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return dot(a - o, cross(b - o, c - o)) / 6;
   }
 
- private:
-  // A face's smallest angle and area, kept until its corners change (forget): every
-  // option tried around a distorted face measures the same faces before the change.
+  Mesh& m;
+  const CleanupOptions& options;
+  std::vector<std::uint8_t> alive;
+  std::vector<std::vector<std::uint32_t>> faces_of;
+  std::unique_ptr<CleanupFaceGrid> grid;
+  std::vector<double> angle, face_area;  // per face; NaN: not measured since it changed
+  double area_budget = 0, area_drift = 0;
+  std::vector<std::uint32_t> component_of;  // per face
+  std::vector<double> component_volume, initial_volume;
+};
+
+// Where a worker may change the mesh, and its share of the budgets that bound the change
+// of the whole (the area, each component's volume): fixed before workers start, so what
+// a worker does depends on nothing the others do at the same time.
+struct WorkRegion {
+  BoundingBox box;               // every corner an edit moves, removes or changes lies in it
+  double max_extent = 0;         // no new face's box is longer than this on any axis
+  double area_share = 0;         // |the worker's area change| stays within it
+  const std::vector<std::uint32_t>* volume_sharers = nullptr;  // per component: workers that may change it
+};
+
+// What a worker changed, to be added to the shared sums in a fixed order.
+struct WorkResult {
+  double area_drift = 0;
+  std::vector<std::pair<std::uint32_t, double>> volume_changes;  // per component touched
+  std::size_t collapses = 0, flips = 0, moves = 0, done = 0, refused = 0;
+  std::vector<std::uint32_t> touched;   // faces changed or restored
+  std::vector<std::uint32_t> deferred;  // positions of faces whose edits reached outside the region
+};
+
+// One worker of the cleanup: the edits around a distorted face, measured, tested and made
+// (paper §2.5). The strategies are in improve_face.
+class Cleaner {
+ public:
+  explicit Cleaner(CleanupShared& shared)
+      : s_(shared), m_(shared.m), options_(shared.options), alive_(shared.alive), faces_of_(shared.faces_of),
+        grid_(*shared.grid), angle_(shared.angle), area_(shared.face_area), component_of_(shared.component_of),
+        initial_volume_(shared.initial_volume), seen_(shared.m.faces.size(), 0) {}
+
+  // Starts a piece of work: edits within `region` (none: anywhere, with the whole budgets).
+  void begin(const WorkRegion* region) {
+    region_ = region;
+    result_ = WorkResult{};
+    volume_change_.clear();
+    if (region) {
+      area_share_ = region->area_share;
+    } else {
+      area_share_ = s_.area_budget - std::abs(s_.area_drift);
+    }
+  }
+
+  // The best valid edit around distorted face f, if any (counted in the result). A face
+  // whose edits were all refused, some of them only for leaving the region, is left for
+  // later, under its `position` in the pass's order.
+  void improve(std::uint32_t f, std::uint32_t position) {
+    if (!alive_[f] || min_angle(f) >= options_.min_angle_deg) return;
+    deferred_ = false;
+    if (improve_face(f))
+      ++result_.done;
+    else if (deferred_)
+      result_.deferred.push_back(position);
+    else
+      ++result_.refused;
+  }
+
+  WorkResult finish() {
+    result_.area_drift = area_drift_;
+    area_drift_ = 0;
+    for (const auto& [component, change] : volume_change_) result_.volume_changes.emplace_back(component, change);
+    std::sort(result_.volume_changes.begin(), result_.volume_changes.end());
+    volume_change_.clear();
+    result_.touched = std::move(touched_);
+    touched_.clear();
+    return std::move(result_);
+  }
+
   double min_angle(std::uint32_t f) const {
     if (std::isnan(angle_[f])) {
       const Triangle& t = m_.faces[f];
       angle_[f] = smallest_angle_deg(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
     }
     return angle_[f];
-  }
-  double area(std::uint32_t f) const {
-    if (std::isnan(area_[f])) area_[f] = face_area(m_, f);
-    return area_[f];
-  }
-  void forget(std::uint32_t f) {
-    angle_[f] = area_[f] = std::numeric_limits<double>::quiet_NaN();
-    touched_.push_back(f);
   }
   // Whether face f's smallest angle is surely not under the angle whose tangent is
   // `tan_angle` (about a millionth over it): the corner smallest_angle_deg measures, on
@@ -153,6 +179,18 @@ class Cleaner {
     const auto [u, w] = smallest_angle_edges(a, b, c);
     const double sine = norm(cross(u, w)), cosine = dot(u, w);  // both times |u| |w|
     return sine > 0 && (cosine <= 0 || sine >= cosine * tan_angle);
+  }
+
+ private:
+  // A face's smallest angle and area are kept until its corners change (forget): every
+  // option tried around a distorted face measures the same faces before the change.
+  double area(std::uint32_t f) const {
+    if (std::isnan(area_[f])) area_[f] = face_area(m_, f);
+    return area_[f];
+  }
+  void forget(std::uint32_t f) {
+    angle_[f] = area_[f] = std::numeric_limits<double>::quiet_NaN();
+    touched_.push_back(f);
   }
   Vec3 normal(const Triangle& t) const {
     const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
@@ -183,6 +221,10 @@ class Cleaner {
   // over", on normals that rounding cannot reverse, as no new face is that thin), the worst angle among the faces involved must get better (unless the edit is
   // one step of a larger one, judged as a whole), and the area must stay within budget.
   bool evaluate(Edit& e, bool must_improve = true) const {
+    if (!within_region(e)) {
+      deferred_ = true;
+      return false;
+    }
     auto pos = [&](Index w) -> const Vec3& { return w == e.moved ? e.target : m_.vertices[w]; };
     double before = 180, area_before = 0;
     for (std::uint32_t f : e.removed) {
@@ -213,7 +255,7 @@ class Cleaner {
     e.before = before;
     e.after = after;
     e.area_change = area_after - area_before;
-    if (!(std::abs(area_drift_ + e.area_change) <= area_budget_)) return false;
+    if (!(std::abs(area_drift_ + e.area_change) <= area_share_)) return false;
     // Each face's own turn says nothing about a component a few faces across (a small
     // cavity): edit by edit it could be flattened and turned inside out. Its volume keeps
     // its sign and at least half its size. The change is measured about a point of the
@@ -221,20 +263,48 @@ class Cleaner {
     if (e.triangles.empty()) return true;
     const Vec3 o = pos(e.triangles.front()[0]);
     double volume_change = 0;
-    for (const Triangle& t : e.triangles) volume_change += tetrahedron_volume(o, pos(t[0]), pos(t[1]), pos(t[2]));
+    for (const Triangle& t : e.triangles) volume_change += CleanupShared::tetrahedron_volume(o, pos(t[0]), pos(t[1]), pos(t[2]));
     for (const auto* list : {&e.removed, &e.changed})
       for (std::uint32_t f : *list) {
         const Triangle& t = m_.faces[f];
-        volume_change -= tetrahedron_volume(o, m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
+        volume_change -= CleanupShared::tetrahedron_volume(o, m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
       }
     e.volume_change = volume_change;
+    // The volume at the start of this work plus every change made since, by this worker
+    // and by the others that may change the component at the same time, each of which
+    // keeps to its share of what may be lost.
     const std::uint32_t component = component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()];
-    const double initial = initial_volume_[component], volume = component_volume_[component] + volume_change;
-    return volume * initial > 0 && std::abs(volume) >= 0.5 * std::abs(initial);
+    const double initial = initial_volume_[component];
+    if (!(initial != 0)) return false;
+    const double sign = initial > 0 ? 1 : -1;
+    const double slack = sign * s_.component_volume[component] - 0.5 * std::abs(initial);
+    const double sharers = region_ ? (*region_->volume_sharers)[component] : 1;
+    const auto it = volume_change_.find(component);
+    const double changed = (it == volume_change_.end() ? 0 : it->second) + volume_change;
+    return sign * changed >= -slack / sharers;
   }
 
-  static double tetrahedron_volume(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c) {
-    return dot(a - o, cross(b - o, c - o)) / 6;
+  // Whether the edit stays within the worker's region: every corner it moves, removes or
+  // changes, and no new face longer than the region allows. Outside it, another worker may
+  // be changing the mesh.
+  bool within_region(const Edit& e) const {
+    if (!region_) return true;
+    const BoundingBox& r = region_->box;
+    auto inside = [&](const Vec3& p) {
+      return p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y && p.z >= r.min.z && p.z <= r.max.z;
+    };
+    for (const auto* list : {&e.removed, &e.changed})
+      for (std::uint32_t f : *list)
+        for (Index w : m_.faces[f])
+          if (!inside(m_.vertices[w])) return false;
+    if (e.moved != kNoVertex && !inside(e.target)) return false;
+    for (const Triangle& t : e.triangles) {
+      BoundingBox box;
+      for (Index w : t) box.extend(w == e.moved ? e.target : m_.vertices[w]);
+      for (int a = 0; a < 3; ++a)
+        if (!(box.max[a] - box.min[a] <= region_->max_extent)) return false;
+    }
+    return true;
   }
 
   // Exactly: no face of the edit meets a face around it, or another face of the edit,
@@ -259,11 +329,11 @@ class Cleaner {
       }
       for (const auto* list : {&e.removed, &e.changed})
         for (std::uint32_t g : *list) seen_[g] = query_;
-      ok = grid_->near(box, [&](std::uint32_t g) {
+      ok = grid_.near(box, [&](std::uint32_t g) {
         if (seen_[g] == query_) return true;
         seen_[g] = query_;
         if (!alive_[g]) return true;
-        const BoundingBox& b = grid_->box(g);
+        const BoundingBox& b = grid_.box(g);
         if (b.max.x < box.min.x || box.max.x < b.min.x || b.max.y < box.min.y || box.max.y < b.min.y ||
             b.max.z < box.min.z || box.max.z < b.min.z)
           return true;
@@ -292,7 +362,7 @@ class Cleaner {
     }
     for (const auto* list : {&e.removed, &e.changed})
       for (std::uint32_t f : *list) {
-        grid_->erase(f);
+        grid_.erase(f);
         for (Index w : m_.faces[f]) std::erase(faces_of_[w], f);
       }
     for (std::uint32_t f : e.removed) alive_[f] = 0;
@@ -301,15 +371,15 @@ class Cleaner {
       const std::uint32_t f = e.changed[k];
       m_.faces[f] = e.triangles[k];
       forget(f);
-      grid_->insert(f);
+      grid_.insert(f);
       for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
     }
     area_drift_ += e.area_change;
-    component_volume_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] += e.volume_change;
+    volume_change_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] += e.volume_change;
     switch (e.kind) {
-      case Edit::Kind::collapse: ++collapses_; break;
-      case Edit::Kind::flip: ++flips_; break;
-      case Edit::Kind::move: ++moves_; break;
+      case Edit::Kind::collapse: ++result_.collapses; break;
+      case Edit::Kind::flip: ++result_.flips; break;
+      case Edit::Kind::move: ++result_.moves; break;
     }
   }
 
@@ -318,7 +388,7 @@ class Cleaner {
     const Step& step = journal_->back();
     const Edit& e = step.edit;
     for (std::uint32_t f : e.changed) {
-      grid_->erase(f);
+      grid_.erase(f);
       for (Index w : m_.faces[f]) std::erase(faces_of_[w], f);
     }
     if (e.moved != kNoVertex) m_.vertices[e.moved] = step.old_position;
@@ -327,15 +397,15 @@ class Cleaner {
       for (std::uint32_t f : *list) {
         alive_[f] = 1;
         forget(f);
-        grid_->insert(f);
+        grid_.insert(f);
         for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
       }
     area_drift_ -= e.area_change;
-    component_volume_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] -= e.volume_change;
+    volume_change_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] -= e.volume_change;
     switch (e.kind) {
-      case Edit::Kind::collapse: --collapses_; break;
-      case Edit::Kind::flip: --flips_; break;
-      case Edit::Kind::move: --moves_; break;
+      case Edit::Kind::collapse: --result_.collapses; break;
+      case Edit::Kind::flip: --result_.flips; break;
+      case Edit::Kind::move: --result_.moves; break;
     }
     journal_->pop_back();
   }
@@ -773,6 +843,7 @@ class Cleaner {
     return false;
   }
 
+ public:
   // Edges far shorter than the surface's typical edge (under min_edge_fraction of the
   // median) are collapsed, shortest first, even where their faces' angles are fine: a
   // mesher's boundary recovery (gmsh's, tetgen's) works in floating point and takes the
@@ -839,25 +910,26 @@ class Cleaner {
     stats.short_edges_after = edges.size();
   }
 
-  void compact() {
-    keep_alive_faces(m_, alive_);
-    drop_unused_vertices(m_);
-  }
-
+ private:
+  CleanupShared& s_;
   Mesh& m_;
   const CleanupOptions& options_;
-  std::vector<std::uint8_t> alive_;
-  std::vector<std::vector<std::uint32_t>> faces_of_;
-  std::unique_ptr<CleanupFaceGrid> grid_;
+  std::vector<std::uint8_t>& alive_;
+  std::vector<std::vector<std::uint32_t>>& faces_of_;
+  CleanupFaceGrid& grid_;
+  std::vector<double>& angle_;
+  std::vector<double>& area_;
+  const std::vector<std::uint32_t>& component_of_;
+  const std::vector<double>& initial_volume_;
   // Per face: the query of the crossing test that last saw it (each face is tested once).
   std::vector<std::uint32_t> seen_;
-  mutable std::vector<double> angle_, area_;  // per face; NaN: not measured since it changed
-  std::vector<std::uint32_t> touched_;  // faces changed or restored during the present pass
   std::uint32_t query_ = 0;
-  double area_budget_ = 0, area_drift_ = 0;
-  std::vector<std::uint32_t> component_of_;  // per face
-  std::vector<double> component_volume_, initial_volume_;
-  std::size_t collapses_ = 0, flips_ = 0, moves_ = 0;
+  const WorkRegion* region_ = nullptr;
+  mutable bool deferred_ = false;  // an edit around the present face was refused for leaving the region
+  WorkResult result_;
+  std::vector<std::uint32_t> touched_;  // faces changed or restored
+  double area_share_ = 0, area_drift_ = 0;
+  std::unordered_map<std::uint32_t, double> volume_change_;  // per component
   // While a compound edit is tried: its steps, and the angle of each face it touched as
   // it was before.
   struct Step {
@@ -869,13 +941,218 @@ class Cleaner {
   std::unordered_map<std::uint32_t, double> first_angle_;
 };
 
+// The passes of the cleanup. Each pass takes the distorted faces, worst first, and gives
+// each the best valid edit. The edits run in parallel with a result that does not depend
+// on the thread count: the faces are sorted into the cells of a coarse grid, coloured like
+// a 3-d chessboard by the parity of their coordinates (eight colours). Two cells of one
+// colour are at least a cell's side apart, which is more than an edit's region on each
+// side (`margin`) and how far beyond it a worker reads (`reach`). The colours run one
+// after another; within a colour, the cells run in parallel, each worker in its cell's
+// region, its faces in the pass's order. A face whose edits would leave the region waits
+// for a serial sweep after the eighth colour. The budgets (area, each component's volume)
+// are shared out at the start of each colour among the cells that may use them, and the
+// cells' changes are added up in cell order.
+class Sweep {
+ public:
+  explicit Sweep(CleanupShared& shared) : s_(shared) {
+    const int threads = std::max(1, omp_get_max_threads());
+    for (int t = 0; t < threads; ++t) workers_.push_back(std::make_unique<Cleaner>(shared));
+    volume_sharers_.assign(shared.initial_volume.size(), 0);
+    sharer_stamp_.assign(shared.initial_volume.size(), kNoCell);
+  }
+
+  void run(CleanupStats& stats) {
+    const Mesh& m = s_.m;
+    Cleaner& serial = *workers_.front();
+    // A margin of a millionth, far above the rounding of atan2 and of the tangent.
+    const double tan_goal = std::tan(s_.options.min_angle_deg * std::numbers::pi / 180) * (1 + 1e-6);
+    // The first pass measures every face; a later one only the faces the one before
+    // listed or changed: no other face's corners moved, so its angle holds.
+    std::vector<std::pair<double, std::uint32_t>> distorted;
+    for (int pass = 0; pass < s_.options.passes; ++pass) {
+      if (pass == 0) {
+        // In parallel, atan2 only where the tangent leaves it in doubt; in face order.
+        std::vector<double> angle(m.faces.size());
+        const auto nf = static_cast<std::int64_t>(m.faces.size());
+#pragma omp parallel for schedule(static)
+        for (std::int64_t f = 0; f < nf; ++f) {
+          const auto face = static_cast<std::uint32_t>(f);
+          angle[f] = s_.alive[f] && !serial.surely_at_least(face, tan_goal) ? serial.min_angle(face) : 180;
+        }
+        for (std::uint32_t f = 0; f < m.faces.size(); ++f)
+          if (s_.alive[f] && angle[f] < s_.options.min_angle_deg) distorted.emplace_back(angle[f], f);
+      } else {
+        for (const auto& listed : distorted) touched_.push_back(listed.second);
+        std::sort(touched_.begin(), touched_.end());
+        touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+        distorted.clear();
+        for (std::uint32_t f : touched_)
+          if (s_.alive[f])
+            if (const double angle = serial.min_angle(f); angle < s_.options.min_angle_deg) distorted.emplace_back(angle, f);
+      }
+      touched_.clear();
+      if (distorted.empty()) break;
+      std::sort(distorted.begin(), distorted.end());
+      if (sweep(distorted, stats) == 0) break;
+    }
+    if (s_.options.min_edge_fraction > 0) {
+      serial.begin(nullptr);
+      serial.shorten_edges(stats);
+      WorkResult r = serial.finish();
+      add(r, stats);
+    }
+  }
+
+ private:
+  static constexpr std::uint64_t kNoCell = ~std::uint64_t{0};
+
+  // One pass's edits; returns how many faces got one.
+  std::size_t sweep(const std::vector<std::pair<double, std::uint32_t>>& distorted, CleanupStats& stats) {
+    const Mesh& m = s_.m;
+    // The longest face (on any axis of its box) bounds how far a worker reads beyond the
+    // faces it changes; an edit may make no face longer than twice that.
+    double longest = 0;
+    const auto nf = static_cast<std::int64_t>(m.faces.size());
+#pragma omp parallel for schedule(static) reduction(max : longest)
+    for (std::int64_t f = 0; f < nf; ++f) {
+      if (!s_.alive[f]) continue;
+      const BoundingBox b = bounding_box(m, static_cast<std::size_t>(f));
+      longest = std::max({longest, b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
+    }
+    const double max_extent = 2 * longest;
+    // An edit changes faces around the distorted face's corners; its region reaches this far
+    // beyond the cell. Beyond the region a worker reads up to three rings of faces (the
+    // faces around the neighbours of an edit's corners) and the faces in the index's cells
+    // its queries touch, and the index's blocks of cells.
+    const double margin = max_extent;
+    const double cell = s_.grid->cell_size();
+    const double reach = std::max(4 * max_extent + cell, s_.grid->shard_side() + 2 * cell);
+    const double side = 1.25 * (2 * margin + reach);
+    const BoundingBox all = bounding_box(m);
+    std::int64_t n[3];
+    for (int a = 0; a < 3; ++a)
+      n[a] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::ceil((all.max[a] - all.min[a]) / side)), 1, 1 << 20);
+    auto coordinate = [&](double x, int a) {
+      const double i = std::floor((x - all.min[a]) / side);
+      return !(i > 0) ? std::int64_t{0} : i >= static_cast<double>(n[a]) ? n[a] - 1 : static_cast<std::int64_t>(i);
+    };
+    // The faces by colour, then cell, then their order in the pass.
+    struct Entry {
+      std::uint64_t key;  // colour, then cell
+      std::uint32_t position;
+      std::array<std::int64_t, 3> cell;
+    };
+    std::vector<Entry> entries(distorted.size());
+    for (std::size_t q = 0; q < distorted.size(); ++q) {
+      const Triangle& t = m.faces[distorted[q].second];
+      const Vec3 centre = (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0;
+      std::array<std::int64_t, 3> c{};
+      for (int a = 0; a < 3; ++a) c[a] = coordinate(centre[a], a);
+      const std::uint64_t colour = static_cast<std::uint64_t>((c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2);
+      const auto id = static_cast<std::uint64_t>((c[0] * n[1] + c[1]) * n[2] + c[2]);
+      entries[q] = {colour << 60 | id, static_cast<std::uint32_t>(q), c};
+    }
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) { return x.key < y.key; });
+
+    std::size_t done = 0;
+    std::vector<std::uint32_t> deferred;
+    for (std::size_t begin = 0; begin < entries.size();) {
+      // One colour: its cells [cell_start[k], cell_start[k + 1]).
+      const std::uint64_t colour = entries[begin].key >> 60;
+      std::vector<std::size_t> cell_start;
+      std::size_t end = begin;
+      for (; end < entries.size() && entries[end].key >> 60 == colour; ++end)
+        if (end == begin || entries[end].key != entries[end - 1].key) cell_start.push_back(end);
+      cell_start.push_back(end);
+      const std::size_t cells = cell_start.size() - 1;
+      for (std::size_t k = 0; k < cells; ++k)
+        for (std::size_t q = cell_start[k]; q < cell_start[k + 1]; ++q) {
+          const std::uint32_t component = s_.component_of[distorted[entries[q].position].second];
+          if (sharer_stamp_[component] != k) {
+            sharer_stamp_[component] = k;
+            ++volume_sharers_[component];
+          }
+        }
+      std::vector<WorkRegion> regions(cells);
+      const double area_share = (s_.area_budget - std::abs(s_.area_drift)) / static_cast<double>(cells);
+      for (std::size_t k = 0; k < cells; ++k) {
+        const std::array<std::int64_t, 3>& c = entries[cell_start[k]].cell;
+        WorkRegion& r = regions[k];
+        for (int a = 0; a < 3; ++a) {
+          const double infinity = std::numeric_limits<double>::infinity();
+          r.box.min[a] = c[a] == 0 ? -infinity : all.min[a] + static_cast<double>(c[a]) * side - margin;
+          r.box.max[a] = c[a] == n[a] - 1 ? infinity : all.min[a] + static_cast<double>(c[a] + 1) * side + margin;
+        }
+        r.max_extent = max_extent;
+        r.area_share = area_share;
+        r.volume_sharers = &volume_sharers_;
+      }
+      std::vector<WorkResult> results(cells);
+      ParallelExceptions errors;
+#pragma omp parallel for schedule(dynamic, 1)
+      for (std::int64_t k = 0; k < static_cast<std::int64_t>(cells); ++k)
+        errors.run(k, [&] {
+          Cleaner& worker = *workers_[static_cast<std::size_t>(omp_get_thread_num())];
+          worker.begin(&regions[k]);
+          for (std::size_t q = cell_start[k]; q < cell_start[k + 1]; ++q)
+            worker.improve(distorted[entries[q].position].second, entries[q].position);
+          results[k] = worker.finish();
+        });
+      errors.rethrow();
+      for (WorkResult& r : results) {
+        done += r.done;
+        deferred.insert(deferred.end(), r.deferred.begin(), r.deferred.end());
+        add(r, stats);
+      }
+      for (std::size_t q = begin; q < end; ++q) {
+        const std::uint32_t component = s_.component_of[distorted[entries[q].position].second];
+        volume_sharers_[component] = 0;
+        sharer_stamp_[component] = kNoCell;
+      }
+      begin = end;
+    }
+    // The faces left for the serial sweep, in the pass's order, with the whole budgets.
+    std::sort(deferred.begin(), deferred.end());
+    Cleaner& serial = *workers_.front();
+    serial.begin(nullptr);
+    for (std::uint32_t q : deferred) serial.improve(distorted[q].second, q);
+    WorkResult r = serial.finish();
+    done += r.done;
+    add(r, stats);
+    return done;
+  }
+
+  void add(WorkResult& r, CleanupStats& stats) {
+    s_.area_drift += r.area_drift;
+    for (const auto& [component, change] : r.volume_changes) s_.component_volume[component] += change;
+    stats.collapses += r.collapses;
+    stats.flips += r.flips;
+    stats.moves += r.moves;
+    stats.refused += r.refused;
+    touched_.insert(touched_.end(), r.touched.begin(), r.touched.end());
+  }
+
+  CleanupShared& s_;
+  std::vector<std::unique_ptr<Cleaner>> workers_;  // one per thread
+  std::vector<std::uint32_t> touched_;             // faces changed during the present pass
+  std::vector<std::uint32_t> volume_sharers_;      // per component: cells of the present colour that may change it
+  std::vector<std::uint64_t> sharer_stamp_;        // per component: the last cell counted
+};
+
 }  // namespace
 
 CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options) {
   CleanupStats stats;
   stats.before = mesh_quality(mesh);
   stats.area_before = surface_area(mesh);
-  if (!mesh.faces.empty()) Cleaner(mesh, options, stats.area_before).run(stats);
+  if (!mesh.faces.empty()) {
+    CleanupShared shared(mesh, options, stats.area_before);
+    Sweep(shared).run(stats);
+    if (stats.collapses > 0) {
+      keep_alive_faces(mesh, shared.alive);
+      drop_unused_vertices(mesh);
+    }
+  }
   stats.after = mesh_quality(mesh);
   stats.area_after = surface_area(mesh);
   return stats;

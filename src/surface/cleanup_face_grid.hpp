@@ -4,7 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+#include <memory>
 #include <vector>
 
 #include "molsurf/mesh.hpp"
@@ -16,8 +16,10 @@ namespace molsurf {
 // faces; the faces change as the cleanup goes on, but only a few percent of them. So the
 // faces as they are at construction sit in flat arrays (cells in a dense grid over the
 // mesh's box, one counting pass and one filling pass), and a face that changes leaves
-// them for a small hash map of cells. Cells outside the dense grid are clamped onto its
-// border, the same way for insertion and query, so nothing is missed.
+// them for small lists kept per block of 2 x 2 x 2 cells (a block is written only by the
+// edits near it, so edits far apart may change faces at the same time; see shard_side).
+// Cells outside the dense grid are clamped onto its border, the same way for insertion
+// and query, so nothing is missed.
 class CleanupFaceGrid {
  public:
   // Cells of side `cell`, enlarged until the grid has at most about 4 cells per face (a
@@ -33,7 +35,10 @@ class CleanupFaceGrid {
         break;
       cell *= 1.25;
     }
+    cell_ = cell;
     inverse_cell_ = 1.0 / cell;
+    for (int a = 0; a < 3; ++a) shards_size_[a] = (size_[a] + kShard - 1) / kShard;
+    moved_.resize(static_cast<std::size_t>(shards_size_[0] * shards_size_[1] * shards_size_[2]));
     const std::size_t cells = static_cast<std::size_t>(size_[0] * size_[1] * size_[2]);
     start_.assign(cells + 1, 0);
     // Counting and filling in parallel: the order of a cell's faces depends on the
@@ -61,15 +66,24 @@ class CleanupFaceGrid {
       in_flat_[f] = 0;  // its flat entries are skipped from now on
       return;
     }
-    for_cells(box_[f], [&](std::uint64_t c) { std::erase(moved_[c], f); });
+    for_cells(box_[f], [&](std::uint64_t c) { std::erase(*moved_[shard_of(c)], Moved{c, f}); });
   }
   // After face f changed (or came back): indexed at its present corners.
   void insert(std::uint32_t f) {
     box_[f] = bounding_box(m_, f);
-    for_cells(box_[f], [&](std::uint64_t c) { moved_[c].push_back(f); });
+    for_cells(box_[f], [&](std::uint64_t c) {
+      auto& list = moved_[shard_of(c)];
+      if (!list) list = std::make_unique<std::vector<Moved>>();
+      list->push_back({c, f});
+    });
   }
 
   const BoundingBox& box(std::uint32_t f) const { return box_[f]; }
+  double cell_size() const { return cell_; }
+  // Insertions and erasures in one box and queries in another may run at the same time
+  // when the two boxes are this far apart on some axis (their cells then fall in
+  // different blocks).
+  double shard_side() const { return (kShard + 2) * cell_; }
 
   // Calls visit(f) for every indexed face in a cell `box` touches (a face may come more
   // than once) until visit returns false; returns false if it did.
@@ -80,15 +94,28 @@ class CleanupFaceGrid {
       if (!go_on) return;
       for (std::uint64_t k = start_[c]; go_on && k < start_[c + 1]; ++k)
         if (in_flat_[flat_[k]]) go_on = visit(flat_[k]);
-      if (!go_on || moved_.empty()) return;
-      if (auto it = moved_.find(c); it != moved_.end())
-        for (std::uint32_t f : it->second)
-          if (!(go_on = visit(f))) return;
+      if (!go_on) return;
+      if (const auto& list = moved_[shard_of(c)])
+        for (const Moved& entry : *list)
+          if (entry.cell == c && !(go_on = visit(entry.face))) return;
     });
     return go_on;
   }
 
  private:
+  static constexpr std::int64_t kShard = 2;
+  struct Moved {
+    std::uint64_t cell;
+    std::uint32_t face;
+    bool operator==(const Moved&) const = default;
+  };
+  std::size_t shard_of(std::uint64_t c) const {
+    const auto k = static_cast<std::int64_t>(c % static_cast<std::uint64_t>(size_[2]));
+    const auto ij = static_cast<std::int64_t>(c / static_cast<std::uint64_t>(size_[2]));
+    const std::int64_t j = ij % size_[1], i = ij / size_[1];
+    return static_cast<std::size_t>(((i / kShard) * shards_size_[1] + j / kShard) * shards_size_[2] + k / kShard);
+  }
+
   template <class F>
   void for_cells(const BoundingBox& b, F&& f) const {
     auto cell = [&](double x, int a) {
@@ -104,13 +131,14 @@ class CleanupFaceGrid {
 
   const Mesh& m_;
   Vec3 origin_;
-  double inverse_cell_ = 1;
-  std::int64_t size_[3] = {1, 1, 1};
+  double cell_ = 1, inverse_cell_ = 1;
+  std::int64_t size_[3] = {1, 1, 1}, shards_size_[3] = {1, 1, 1};
   std::vector<BoundingBox> box_;          // per face, as indexed
   std::vector<std::uint64_t> start_;      // per cell of the dense grid: its range in flat_
   std::vector<std::uint32_t> flat_;       // the faces as they were at construction
   std::vector<std::uint8_t> in_flat_;     // per face: its flat entries still hold
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> moved_;  // faces changed since
+  // Per block of cells (allocated when first written): faces changed since, with their cell.
+  std::vector<std::unique_ptr<std::vector<Moved>>> moved_;
 };
 
 }  // namespace molsurf
