@@ -125,6 +125,21 @@ TEST(CoplanarFaces, UnionOrderDoesNotChangeTheVolume) {
     EXPECT_NEAR(signed_volume(u.mesh), reference, 1e-9 * reference) << (a_first ? "(m1 u m2) u m0" : "m0 u (m1 u m2)");
   }
   testing::expect_boolean_invariants(a, m0, "(m1 u m2) and m0");
+  // m0 - A: the rounded point lands beyond the coplanar face, the sliver along the crease
+  // crosses nothing itself, and the faces beside it pierce the face across its longest edge.
+  testing::expect_boolean_invariants(m0, a, "m0 and (m1 u m2)");
+}
+
+// Thirteen spheres of radius 2.58 A on a 1.88 A lattice (frequency 1): an intermediate
+// merge of the pairwise union left a sliver along a crease turned over by rounding (its
+// neighbours piercing the face across it), and the next merge's re-triangulation found no
+// valid triangle. Both methods now agree.
+TEST(CoplanarFaces, LatticeWhosePairwiseMergeLeftAFoldAlongACrease) {
+  const testing::DegeneratePlacement p = testing::degenerate_placement(testing::PlacementFamily::lattice, 1024);
+  SphereOptions o;
+  o.frequency = 1;
+  o.probe = 0.7;
+  EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1));
 }
 
 }  // namespace

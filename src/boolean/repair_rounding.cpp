@@ -113,7 +113,8 @@ class Repairer {
         if (alive_[f] && degenerate(m_, m_.faces[f])) changed |= repair(f);
       if (!changed) break;
     }
-    // Folds: a face with a rounded corner that crosses a face sharing a corner with it.
+    // Folds: a face with a rounded corner that crosses a face sharing a corner with it, or
+    // a sliver whose neighbours cross the face across its longest edge.
     for (int pass = 0; pass < 8; ++pass) {
       bool changed = false;
       for (std::uint32_t f : candidates()) {
@@ -121,7 +122,7 @@ class Repairer {
         const Triangle& t = m_.faces[f];
         if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
         if (!may_turn_over(m_, t)) continue;  // rounding (~1e-16) cannot turn it over
-        if (crosses_a_neighbour(f)) changed |= unfold(f, rounded);
+        if (crosses_a_neighbour(f) || sides_cross_across(f, rounded)) changed |= unfold(f, rounded);
       }
       if (!changed) break;
     }
@@ -230,6 +231,26 @@ class Repairer {
     return false;
   }
 
+
+  // A sliver along a crease, turned over by rounding its apex (the corner opposite its
+  // longest edge): it crosses nothing itself, but the faces across its two short edges now
+  // poke through the face across its longest edge, 1e-16 from that edge. Exact.
+  bool sides_cross_across(std::uint32_t f, const std::vector<std::uint8_t>& rounded) const {
+    const auto [a, b, c] = longest_edge(m_.faces[f]);
+    if (!rounded[c]) return false;
+    auto across = [&](Index u, Index v) -> std::uint32_t {
+      const std::vector<std::uint32_t> on = faces_on_edge(u, v);
+      if (on.size() != 2) return ~0u;
+      return on[0] == f ? on[1] : on[0];
+    };
+    const std::uint32_t g = across(a, b);
+    if (g == ~0u || !alive_[g]) return false;
+    for (const std::uint32_t h : {across(b, c), across(c, a)})
+      if (h != ~0u && h != g && alive_[h] &&
+          relation(m_.faces[h], m_.faces[g]) == geometry::TrianglePairRelation::intersecting)
+        return true;
+    return false;
+  }
 
   // Removes the fold at face f, by the smallest change that works. A folded face is a
   // sliver or a tiny face: its corner opposite the longest edge is within a rounding error
