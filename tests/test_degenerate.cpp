@@ -130,6 +130,21 @@ TEST(CoplanarFaces, UnionOrderDoesNotChangeTheVolume) {
   testing::expect_boolean_invariants(m0, a, "m0 and (m1 u m2)");
 }
 
+// Two equal atoms mirror images of each other across a plane that holds a third atom's
+// centre (tangent pairs seed 1004: (0, 0, 0), (3.4, 0, 0), (0, 3.4, 0), (1.7, 1.7, 0), radius
+// 1.7, probe 1.4, frequency 1): a vertex of the third atom's icosahedron lies exactly on the
+// trace the two mirror faces leave on each other. Each of the two faces sees the vertex
+// only touch its interior; both must split the trace there, or the one-pass union leaves
+// open edges (and falls back to the pairwise union).
+TEST(CoplanarFaces, VertexOnTheTraceOfTwoMirrorFaces) {
+  const testing::DegeneratePlacement p = testing::degenerate_placement(testing::PlacementFamily::tangent_pairs, 1004);
+  ASSERT_EQ(p.atoms.size(), 4u);
+  SphereOptions o;
+  o.frequency = 1;
+  o.probe = 1.4;
+  EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1));
+}
+
 // Thirteen spheres of radius 2.58 A on a 1.88 A lattice (frequency 1): an intermediate
 // merge of the pairwise union left a sliver along a crease turned over by rounding (its
 // neighbours piercing the face across it), and the next merge's re-triangulation found no

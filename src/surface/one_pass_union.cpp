@@ -534,12 +534,27 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
     face.boundary.insert(face.boundary.end(), inside.begin(), inside.end());
   }
   // Interior points on a trace (a point where a neighbour only touches the face's
-  // interior splits nothing).
+  // interior splits nothing, unless it lies on another neighbour's trace: that neighbour's
+  // face, across the trace, sees the same point on the same trace and splits it there).
   auto& on_segment = w.on_segment;
   on_segment.assign(w.points.size(), 0);
   for (const Segment& s : w.segments) on_segment[s.s] = on_segment[s.t] = 1;
+  auto inside_a_trace = [&](std::uint32_t p) {
+    for (const Segment& s : w.segments) {
+      if (s.s == s.t || s.s == p || s.t == p) continue;
+      const auto& on = w.on_neighbour[p];
+      if (std::find(on.begin(), on.end(), s.neighbour) != on.end()) continue;
+      const auto g = nbr_[s.neighbour].face(s.plane);
+      if (geometry::orient3d(g[0], g[1], g[2], w.points[p]) != 0) continue;  // p is on f's plane: on the trace's line
+      std::vector<std::uint32_t> ids{s.s, p, s.t};
+      boolean_engine::sort_along_segment(ids, w.points[s.s].rounded(), w.points[s.t].rounded(), w.points);
+      if (ids[1] == p) return true;
+    }
+    return false;
+  };
   for (std::uint32_t p = 0; p < w.points.size(); ++p)
-    if (w.places[p].where == Where::interior && (on_segment[p] || w.on_neighbour[p].size() >= 2))
+    if (w.places[p].where == Where::interior &&
+        (on_segment[p] || w.on_neighbour[p].size() >= 2 || inside_a_trace(p)))
       face.interior.push_back(p);
   // Segments without repeats (coplanar neighbour faces can trace the same one), each with
   // the crossings built on it.

@@ -7,7 +7,10 @@
 //   intersect (§2.2.2) traces of the neighbours' faces on it, by exact signed volumes;
 //                      points are implicit (edge x plane, or three planes where two
 //                      neighbours' traces cross) and compared by exact value;
-//   split     (§2.3)   re-triangulated in its plane, constrained to the traces;
+//   split     (§2.3)   re-triangulated in its plane, constrained to the traces, each trace
+//                      split at every point of the face on it (a neighbour's vertex that
+//                      only touches the face splits it too: the face across the trace
+//                      sees the same vertex on the same trace);
 //   classify  (§2.4)   a piece is kept iff it lies outside every neighbour: by convexity, a
 //                      piece is inside a neighbour iff its three corners are;
 //   join               pieces of all atoms meet at exactly equal points: one closed
