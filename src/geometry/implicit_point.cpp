@@ -22,13 +22,6 @@ Interval det3(const IVec& u, const IVec& v, const IVec& w) {  // w . (u x v)
   return w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
 }
 
-using QVec = std::array<mpq_class, 3>;
-QVec to_rational(const Vec3& v) { return {mpq_class(v.x), mpq_class(v.y), mpq_class(v.z)}; }
-QVec sub(const QVec& a, const QVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-mpq_class det3(const QVec& u, const QVec& v, const QVec& w) {
-  return w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
-}
-
 // (x / w) * 2^exponent truncated toward zero to a double (w > 0), as SmallInteger's
 // truncated_quotient: about 64 quotient bits, then mpz_get_d's truncation to 53.
 double truncated_quotient(const mpz_class& x, const mpz_class& w, int exponent) {
