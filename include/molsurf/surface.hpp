@@ -89,9 +89,8 @@ struct SurfaceOptions {
 };
 
 struct SurfaceTimings {  // seconds
-  double union_levels = 0;
-  double subtrees = 0;  // of union_levels: the subtrees below SurfaceResult::subtree_height
-  double total = 0;
+  double union_levels = 0;  // the whole union, either method
+  double subtrees = 0;      // of union_levels: the subtrees below SurfaceResult::subtree_height
 };
 
 // One level of the merge tree: where the time goes (step times are summed over the

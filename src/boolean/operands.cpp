@@ -6,8 +6,6 @@
 
 namespace molsurf::boolean_engine {
 
-Operands::Operands(const Mesh& a, const Mesh& b) : Operands(a, b, a, b) {}
-
 Operands::Operands(const Mesh& a, const Mesh& b, const Mesh& solid_a, const Mesh& solid_b, bool allow_open)
     : Operands(a, b, solid_a, solid_b, {bounding_box(solid_a), bounding_box(solid_b)}, allow_open) {}
 

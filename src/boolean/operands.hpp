@@ -19,8 +19,6 @@ inline constexpr std::uint32_t kNoFace = ~std::uint32_t{0};
 
 class Operands {
  public:
-  // Two closed solids.
-  Operands(const Mesh& a, const Mesh& b);
   // Parts of the closed solids `solid_a` and `solid_b` (open edges allowed). With
   // `allow_open`, the operands may also be open surfaces themselves (the outer envelope,
   // outer_envelope.hpp): an edge with one face is then a free boundary.

@@ -145,7 +145,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     if (one_pass.stats.open_edges == 0) {
       result.mesh = std::move(one_pass.mesh);
       result.method = SurfaceMethod::one_pass;
-      result.seconds.union_levels = result.seconds.total =
+      result.seconds.union_levels =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return result;
     }
@@ -232,7 +232,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   result.mesh = std::move(*level[0]);
   result.merges = total_merges;
   result.levels = height;
-  result.seconds.total = result.seconds.union_levels =
+  result.seconds.union_levels =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
