@@ -145,6 +145,29 @@ TEST(CoplanarFaces, VertexOnTheTraceOfTwoMirrorFaces) {
   EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1));
 }
 
+// Placements whose last pairwise merge rounded two points to one position joined by an
+// edge whose ends share a neighbour beyond the edge's two faces (a vertex with four faces
+// on its twin): the collapse fails the link condition until the edge to that neighbour is
+// flipped out of the way. Before, two degenerate faces stayed and the surface failed its check.
+TEST(CoplanarFaces, ZeroLengthEdgeBlockedByACommonNeighbour) {
+  struct Case {
+    testing::PlacementFamily family;
+    std::uint32_t seed;
+    int frequency;
+    double probe;
+  };
+  for (const Case c : {Case{testing::PlacementFamily::lattice, 1004, 1, 0.7},
+                       Case{testing::PlacementFamily::lattice, 1074, 1, 0.7},
+                       Case{testing::PlacementFamily::icosahedral_shell, 1009, 1, 0.7},
+                       Case{testing::PlacementFamily::icosahedral_shell, 1082, 1, 0.0}}) {
+    const testing::DegeneratePlacement p = testing::degenerate_placement(c.family, c.seed);
+    SphereOptions o;
+    o.frequency = c.frequency;
+    o.probe = c.probe;
+    EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1)) << p.family << " seed " << c.seed;
+  }
+}
+
 // Thirteen spheres of radius 2.58 A on a 1.88 A lattice (frequency 1): an intermediate
 // merge of the pairwise union left a sliver along a crease turned over by rounding (its
 // neighbours piercing the face across it), and the next merge's re-triangulation found no

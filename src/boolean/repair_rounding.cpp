@@ -195,12 +195,88 @@ class Repairer {
     const Triangle t = m_.faces[f];
     for (int i = 0; i < 3; ++i) {
       const Index u = t[i], v = t[(i + 1) % 3];
-      if (u != v && m_.vertices[u] == m_.vertices[v]) return collapse(u, v);
+      if (u != v && m_.vertices[u] == m_.vertices[v]) return collapse(u, v) || unblocked_collapse(u, v);
     }
     for (int i = 0; i < 3; ++i) {
       const Index c = t[i], a = t[(i + 1) % 3], b = t[(i + 2) % 3];
       if (strictly_between(m_.vertices[a], m_.vertices[c], m_.vertices[b])) return flip(f, a, b, c);
     }
+    return false;
+  }
+
+  // The common neighbours of u and v beyond the faces on edge uv: what makes the edge's
+  // collapse fail the link condition.
+  std::vector<Index> blocking_vertices(Index u, Index v) {
+    const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
+    std::vector<Index> opposite, around_u, blocking;
+    for (std::uint32_t g : on_edge)
+      for (Index w : m_.faces[g])
+        if (w != u && w != v) opposite.push_back(w);
+    for (std::uint32_t g : faces_of(u))
+      for (Index w : m_.faces[g])
+        if (w != u && w != v) around_u.push_back(w);
+    for (std::uint32_t g : faces_of(v))
+      for (Index w : m_.faces[g])
+        if (w != u && w != v && std::find(around_u.begin(), around_u.end(), w) != around_u.end() &&
+            std::find(opposite.begin(), opposite.end(), w) == opposite.end() &&
+            std::find(blocking.begin(), blocking.end(), w) == blocking.end())
+          blocking.push_back(w);
+    return blocking;
+  }
+
+  // A zero-length edge uv whose collapse fails the link condition only because u and v
+  // have a common neighbour w beyond the edge's two faces (a vertex with four faces whose
+  // position equals its neighbour's): edge vw or uw is flipped out of the way first, when
+  // that makes no face degenerate and leaves no more exact crossings around it, then uv
+  // collapses. If it still cannot, the flips are undone.
+  bool unblocked_collapse(Index u, Index v) {
+    struct Flipped {
+      std::uint32_t f, g, first_new;
+      Triangle old_f, old_g;
+    };
+    std::vector<Flipped> done;
+    auto undo_one = [&](const Flipped& flip) {
+      for (std::uint32_t added = flip.first_new; added < flip.first_new + 2; ++added)
+        if (alive_[added]) kill(added);
+      for (auto [h, tri] : {std::pair{flip.f, flip.old_f}, std::pair{flip.g, flip.old_g}}) {
+        m_.faces[h] = tri;
+        alive_[h] = 1;
+        index_face(h);
+      }
+    };
+    for (int step = 0; step < 3; ++step) {
+      const std::vector<Index> blocking = blocking_vertices(u, v);
+      if (blocking.empty()) break;
+      bool flipped = false;
+      for (std::size_t k = 0; k < blocking.size() && !flipped; ++k)
+        for (const Index end : {v, u}) {
+          const Index w = blocking[k];
+          const std::vector<std::uint32_t> on = faces_on_edge(end, w);
+          if (on.size() != 2 || touches_frozen({end, w})) continue;
+          Index c = end, d = end;
+          for (Index x : m_.faces[on[0]])
+            if (x != end && x != w) c = x;
+          for (Index x : m_.faces[on[1]])
+            if (x != end && x != w) d = x;
+          if (c == end || d == end || c == d || !faces_on_edge(c, d).empty() || touches_frozen({c, d})) continue;
+          if (geometry::collinear3d(m_.vertices[end], m_.vertices[c], m_.vertices[d]) ||
+              geometry::collinear3d(m_.vertices[w], m_.vertices[c], m_.vertices[d]))
+            continue;
+          const std::size_t before = crossings_around({end, w, c, d});
+          const Flipped record{on[0], on[1], static_cast<std::uint32_t>(m_.faces.size()), m_.faces[on[0]],
+                               m_.faces[on[1]]};
+          replace_by_flip(on[0], on[1], c, d);
+          if (crossings_around({end, w, c, d}) <= before) {
+            done.push_back(record);
+            flipped = true;
+            break;
+          }
+          undo_one(record);
+        }
+      if (!flipped) break;
+    }
+    if (!done.empty() && collapse(u, v)) return true;
+    for (auto it = done.rbegin(); it != done.rend(); ++it) undo_one(*it);
     return false;
   }
 
