@@ -35,7 +35,10 @@ struct CleanupStats {
 // of one corner toward the centre of its neighbours in the tangent plane (a seam vertex
 // only along its seam). Every change must keep the mesh a 2-manifold (link condition; a
 // flip's new edge must not exist), must turn no face over or make it degenerate (exact
-// collinearity; no normal may turn by more than 60 degrees), must make the worst angle
+// collinearity; no normal may turn by more than 60 degrees; no edge of a changed face may
+// fold its two faces within 1 degree of each other unless the faces replaced had a sharper
+// edge: exactly valid, such a fold looks like overlapping faces to floating-point
+// consumers such as meshers), must make the worst angle
 // among the faces it touches better (a cluster merge or a neck widening is judged as a
 // whole), must keep the total area within max_area_change, and no
 // face it changes may meet any other face beyond their shared corners (exact

@@ -33,6 +33,7 @@ constexpr double kSmoothCos = 0.87;        // a vertex moves only if its faces a
 constexpr double kNeckFraction = 0.5;  // a neck's loop: edges under this part of the sliver's longest
 constexpr double kNeckWidth = 0.5;     // it widens to this part of the edges leaving it
 constexpr double kCapHeight = 0.02;    // a cap: its apex within this part of its base's length (about 1 degree)
+constexpr double kMinOpeningDeg = 1;  // no edit folds two faces on an edge closer than this
 
 // One local change of the mesh, described before it is made so that every check can be
 // run on it first. Faces keep their index (and tag); a collapse removes two.
@@ -284,6 +285,70 @@ class Cleaner {
     return sign * changed >= -slack / sharers;
   }
 
+  // Whether the edit leaves no fold: on every edge of its new faces, the two faces open at
+  // least kMinOpeningDeg (180: flat), or at least as wide as the sharpest edge of the faces it
+  // replaces. Each face's own turn is bounded elsewhere, but a face may turn onto the
+  // unchanged face across one of its edges; a knife-edge fold is exactly valid, yet
+  // floating-point consumers (a mesher's boundary recovery) take its two faces for
+  // overlapping.
+  bool keeps_edges_open(const Edit& e) const {
+    auto pos = [&](Index w) -> const Vec3& { return w == e.moved ? e.target : m_.vertices[w]; };
+    auto normal_at = [&](const Triangle& t, bool moved) {
+      const Vec3 &a = moved ? pos(t[0]) : m_.vertices[t[0]], &b = moved ? pos(t[1]) : m_.vertices[t[1]],
+                 &c = moved ? pos(t[2]) : m_.vertices[t[2]];
+      return cross(b - a, c - a);
+    };
+    auto in_edit = [&](std::uint32_t g) {
+      return std::find(e.removed.begin(), e.removed.end(), g) != e.removed.end() ||
+             std::find(e.changed.begin(), e.changed.end(), g) != e.changed.end();
+    };
+    // The cosine of the angle between the normals, against -cos(opening).
+    auto opening_cos = [](const Vec3& n1, const Vec3& n2) {
+      const double l = norm(n1) * norm(n2);
+      return l > 0 ? dot(n1, n2) / l : 1.0;
+    };
+    static const double limit = -std::cos(kMinOpeningDeg * std::numbers::pi / 180);
+    double after = 1;  // the most negative cosine: the sharpest edge
+    for (std::size_t k = 0; k < e.triangles.size(); ++k) {
+      const Triangle& t = e.triangles[k];
+      const Vec3 n = normal_at(t, true);
+      for (int i = 0; i < 3; ++i) {
+        const Index a = t[i], b = t[(i + 1) % 3];
+        // The face across: another new face running b -> a, else an unchanged one.
+        bool found = false;
+        for (std::size_t j = 0; j < e.triangles.size() && !found; ++j) {
+          const Triangle& u = e.triangles[j];
+          for (int m = 0; m < 3 && !found; ++m)
+            if (u[m] == b && u[(m + 1) % 3] == a) {
+              after = std::min(after, opening_cos(n, normal_at(u, true)));
+              found = true;
+            }
+        }
+        for (std::uint32_t g : faces_of_[a]) {
+          if (found) break;
+          if (in_edit(g)) continue;
+          const Triangle& u = m_.faces[g];
+          for (int m = 0; m < 3 && !found; ++m)
+            if (u[m] == b && u[(m + 1) % 3] == a) {
+              after = std::min(after, opening_cos(n, normal_at(u, true)));
+              found = true;
+            }
+        }
+      }
+    }
+    if (after >= limit) return true;
+    double before = 1;
+    for (const auto* list : {&e.removed, &e.changed})
+      for (std::uint32_t f : *list) {
+        const Triangle& t = m_.faces[f];
+        const Vec3 n = normal_at(t, false);
+        for (int i = 0; i < 3; ++i)
+          for (std::uint32_t g : faces_on_edge(t[i], t[(i + 1) % 3]))
+            if (g != f) before = std::min(before, opening_cos(n, normal_at(m_.faces[g], false)));
+      }
+    return after >= before;
+  }
+
   // Whether the edit stays within the worker's region: every corner it moves, removes or
   // changes, and no new face longer than the region allows. Outside it, another worker may
   // be changing the mesh.
@@ -306,6 +371,10 @@ class Cleaner {
     }
     return true;
   }
+
+  // The tests of an edit that the cheap measures of evaluate leave: no fold, then (exact) no
+  // crossing. Run only on the options tried, best first.
+  bool fits(const Edit& e) { return keeps_edges_open(e) && crosses_nothing(e); }
 
   // Exactly: no face of the edit meets a face around it, or another face of the edit,
   // beyond the corners and edges they share.
@@ -454,7 +523,7 @@ class Cleaner {
         const std::vector<std::uint32_t> on_edge = faces_on_edge(keep, *it);
         if (on_edge.size() != 2 || !link_condition(m_, faces_of_[keep], faces_of_[*it], on_edge, keep, *it)) continue;
         Edit e = collapse(keep, *it, on_edge, m_.vertices[keep]);
-        if (!evaluate(e, false) || !crosses_nothing(e)) continue;
+        if (!evaluate(e, false) || !fits(e)) continue;
         commit(e);
         rest.erase(it);
         progress = true;
@@ -536,7 +605,7 @@ class Cleaner {
       bool ok = true;
       for (Index v : loop) {
         Edit e = move(v, centre + factor * (m_.vertices[v] - centre));
-        if (!evaluate(e, false) || !crosses_nothing(e)) {
+        if (!evaluate(e, false) || !fits(e)) {
           ok = false;
           break;
         }
@@ -584,7 +653,7 @@ class Cleaner {
               steps.push_back(flip(on[0], end, w));
         }
         for (Edit& e : steps)
-          if (!e.changed.empty() && evaluate(e, false) && crosses_nothing(e)) {
+          if (!e.changed.empty() && evaluate(e, false) && fits(e)) {
             commit(e);
             ok = true;
             break;
@@ -602,7 +671,7 @@ class Cleaner {
           }
           std::stable_sort(collapses.begin(), collapses.end(), [](const Edit& x, const Edit& y) { return x.after > y.after; });
           for (const Edit& e : collapses)
-            if (crosses_nothing(e)) {
+            if (fits(e)) {
               commit(e);
               ok = true;
               break;
@@ -836,7 +905,7 @@ class Cleaner {
       return x.after > y.after;
     });
     for (const Edit& e : options)
-      if (crosses_nothing(e)) {
+      if (fits(e)) {
         commit(e);
         return true;
       }
