@@ -14,13 +14,6 @@
 
 namespace molsurf::boolean_engine {
 
-namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
-
-
-}  // namespace
-
 // A sub-face lies in coplanar face g of the other operand when its three corners are in
 // the closed triangle g (the constraints include g's boundary, so a piece is either
 // inside g or has no interior point in common with it).
@@ -80,7 +73,7 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
       for (int i = 0; i < 3; ++i) {
         const std::uint32_t a = subs[s].points[i], b = subs[s].points[(i + 1) % 3];
         if (on_curve(a, b)) continue;
-        piece_edges.push_back({edge_key(a, b), operand << 31 | s});
+        piece_edges.push_back({undirected_edge_key(a, b), operand << 31 | s});
       }
     }
   }
@@ -108,7 +101,7 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
       if (on_curve(a, b)) continue;
       if (!split.cut[g]) {
         if (f < g && !coincident[split.first_sub_face[g]]) unite(s, split.first_sub_face[g]);
-      } else if (const std::uint32_t piece = piece_on_edge(operand, edge_key(a, b)); piece != ~0u) {
+      } else if (const std::uint32_t piece = piece_on_edge(operand, undirected_edge_key(a, b)); piece != ~0u) {
         unite(s, piece);
       }
     }
@@ -226,6 +219,29 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   for (std::uint32_t s = 0; s < n; ++s)
     if (!coincident[s]) result.side[s] = verdict[patch_of[s]] == 1 ? Side::inside : Side::outside;
   return result;
+}
+
+Keep select_sub_face(BooleanOp op, int operand, Side side) {
+  // Regularised operations. A coincident piece keeps a's copy when the result has a
+  // surface there, and both copies go when the solids meet face to face (the surface
+  // vanishes inside the union, or there is no volume left between them).
+  switch (op) {
+    case BooleanOp::union_:
+      if (side == Side::outside) return Keep::keep;
+      if (side == Side::coincident_same && operand == 0) return Keep::keep;
+      return Keep::drop;
+    case BooleanOp::intersection:
+      if (side == Side::inside) return Keep::keep;
+      if (side == Side::coincident_same && operand == 0) return Keep::keep;
+      return Keep::drop;
+    case BooleanOp::difference:
+      if (operand == 0) {
+        if (side == Side::outside || side == Side::coincident_opposite) return Keep::keep;
+        return Keep::drop;
+      }
+      return side == Side::inside ? Keep::keep_flipped : Keep::drop;
+  }
+  return Keep::drop;
 }
 
 }  // namespace molsurf::boolean_engine

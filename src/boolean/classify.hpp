@@ -11,16 +11,12 @@
 
 #include "boolean/arrangement.hpp"
 #include "boolean/operands.hpp"
+#include "boolean/split.hpp"
+#include "molsurf/boolean.hpp"
 
 namespace molsurf::boolean_engine {
 
 enum class Side : std::uint8_t { outside, inside, coincident_same, coincident_opposite };
-
-struct SubFace {
-  std::array<std::uint32_t, 3> points;  // point ids, oriented as the source face
-  std::uint32_t face;                   // combined source face
-};
-
 
 struct Classification {
   std::vector<Side> side;  // per sub-face
@@ -28,12 +24,14 @@ struct Classification {
   std::size_t exact_ray_casts = 0;  // of those, rays from an exact rational point
 };
 
-struct SplitResult;
-
 // A sub-face lies in the coplanar face g of the other operand (all corners in the closed
 // triangle g, exactly).
 bool inside_partner(const Operands& operands, const Arrangement& arrangement, const SubFace& sub_face, std::uint32_t g);
 
 Classification classify_sub_faces(const Operands& operands, const Arrangement& arrangement, const SplitResult& split);
+
+// Which sub-faces the operation keeps, and whether each is flipped (b's part of a difference).
+enum class Keep : std::uint8_t { drop, keep, keep_flipped };
+Keep select_sub_face(BooleanOp op, int operand, Side side);
 
 }  // namespace molsurf::boolean_engine

@@ -25,7 +25,7 @@
 
 #include "boolean/arrangement.hpp"
 #include "boolean/split.hpp"
-#include "boolean/stitch.hpp"
+#include "boolean/classify.hpp"
 
 namespace molsurf::boolean_engine {
 

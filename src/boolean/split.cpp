@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
-#include "boolean/retriangulate.hpp"
+#include "boolean/advancing_front.hpp"
+#include "boolean/ear_clipping.hpp"
+#include "boolean/face_points.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "geometry/predicates.hpp"
 

@@ -1,15 +1,23 @@
 #pragma once
 // Step 3 driver: every face becomes sub-faces, the cut ones re-triangulated by the
-// advancing front (retriangulate.hpp), the others kept whole; and the pieces of the
+// advancing front (ear_clipping.hpp, advancing_front.hpp), the others kept whole; and the pieces of the
 // intersection curves (split at every point on them) are collected for classification.
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "boolean/arrangement.hpp"
-#include "boolean/classify.hpp"
+#include "boolean/operands.hpp"
 
 namespace molsurf::boolean_engine {
+
+// A piece of a face after the split: a triangle on the face's own points and the
+// intersection points in it.
+struct SubFace {
+  std::array<std::uint32_t, 3> points;  // point ids, oriented as the source face
+  std::uint32_t face;                   // combined source face
+};
 
 struct SplitResult {
   std::vector<SubFace> sub_faces;  // in order of source face

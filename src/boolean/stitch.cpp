@@ -13,33 +13,7 @@
 
 namespace molsurf::boolean_engine {
 
-Keep select_sub_face(BooleanOp op, int operand, Side side) {
-  // Regularised operations. A coincident piece keeps a's copy when the result has a
-  // surface there, and both copies go when the solids meet face to face (the surface
-  // vanishes inside the union, or there is no volume left between them).
-  switch (op) {
-    case BooleanOp::union_:
-      if (side == Side::outside) return Keep::keep;
-      if (side == Side::coincident_same && operand == 0) return Keep::keep;
-      return Keep::drop;
-    case BooleanOp::intersection:
-      if (side == Side::inside) return Keep::keep;
-      if (side == Side::coincident_same && operand == 0) return Keep::keep;
-      return Keep::drop;
-    case BooleanOp::difference:
-      if (operand == 0) {
-        if (side == Side::outside || side == Side::coincident_opposite) return Keep::keep;
-        return Keep::drop;
-      }
-      return side == Side::inside ? Keep::keep_flipped : Keep::drop;
-  }
-  return Keep::drop;
-}
-
 namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return undirected_edge_key(a, b); }
-
 
 Vec3 rounded_point(const geometry::ImplicitPoint& p) {
   if (p.is_explicit()) return p.explicit_value();
@@ -122,7 +96,7 @@ std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_by_edge(cons
                                                                             const std::vector<std::uint32_t>& faces) {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> faces_of_edge;
   for (std::uint32_t f : faces)
-    for (int i = 0; i < 3; ++i) faces_of_edge[edge_key(m.faces[f][i], m.faces[f][(i + 1) % 3])].push_back(f);
+    for (int i = 0; i < 3; ++i) faces_of_edge[undirected_edge_key(m.faces[f][i], m.faces[f][(i + 1) % 3])].push_back(f);
   return faces_of_edge;
 }
 
@@ -155,7 +129,7 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::v
     }
     for (std::uint32_t f : around)
       for (std::uint32_t g : around)
-        if (f < g && pairs.count(edge_key(f, g))) join(f, g, a, b);
+        if (f < g && pairs.count(undirected_edge_key(f, g))) join(f, g, a, b);
   }
   // The first fan (lowest slot) of each vertex keeps it; every other fan gets a copy.
   std::unordered_map<std::uint32_t, std::uint32_t> first_fan_of_vertex;
@@ -200,7 +174,7 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
   for (const auto& [key, faces] : faces_by_edge(m, near)) {
     if (faces.size() <= 2) continue;
     const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
-    for (auto [f, g] : pair_faces_around_edge(m, point_of_vertex, arr, a, b, faces)) pairs.insert(edge_key(f, g));
+    for (auto [f, g] : pair_faces_around_edge(m, point_of_vertex, arr, a, b, faces)) pairs.insert(undirected_edge_key(f, g));
   }
   const std::size_t original_vertices = point_of_vertex.size();
   auto may_split = [&](std::uint32_t v) {  // on both surfaces, or a midpoint added below
@@ -240,9 +214,9 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
     std::vector<std::uint64_t> halves_paired;
     for (std::uint32_t f : faces)
       for (std::uint32_t g : faces)
-        if (f < g && pairs.count(edge_key(f, g))) {
-          halves_paired.push_back(edge_key(half_at_a[f], half_at_a[g]));
-          halves_paired.push_back(edge_key(half_at_b[f], half_at_b[g]));
+        if (f < g && pairs.count(undirected_edge_key(f, g))) {
+          halves_paired.push_back(undirected_edge_key(half_at_a[f], half_at_a[g]));
+          halves_paired.push_back(undirected_edge_key(half_at_b[f], half_at_b[g]));
         }
     pairs.insert(halves_paired.begin(), halves_paired.end());
   }

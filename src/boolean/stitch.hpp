@@ -14,10 +14,6 @@
 
 namespace molsurf::boolean_engine {
 
-// Which sub-faces the operation keeps, and whether each is flipped (b's part of a difference).
-enum class Keep : std::uint8_t { drop, keep, keep_flipped };
-Keep select_sub_face(BooleanOp op, int operand, Side side);
-
 struct StitchResult {
   Mesh mesh;
   std::vector<std::uint8_t> face_operand;
