@@ -168,6 +168,19 @@ TEST(CoplanarFaces, ZeroLengthEdgeBlockedByACommonNeighbour) {
   }
 }
 
+// An icosahedral shell (seed 1036, frequency 1, probe 0) whose last merge rounded a sliver
+// of the active part over a passive face at a vertex they share: the rounding repair sees
+// only the active part, so the crossing is looked for after the passive faces join, and
+// the merge is redone whole when there is one.
+TEST(CoplanarFaces, FoldOverAPassiveFace) {
+  const testing::DegeneratePlacement p =
+      testing::degenerate_placement(testing::PlacementFamily::icosahedral_shell, 1036);
+  SphereOptions o;
+  o.frequency = 1;
+  o.probe = 0;
+  EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1));
+}
+
 // Thirteen spheres of radius 2.58 A on a 1.88 A lattice (frequency 1): an intermediate
 // merge of the pairwise union left a sliver along a crease turned over by rounding (its
 // neighbours piercing the face across it), and the next merge's re-triangulation found no

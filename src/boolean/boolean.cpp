@@ -1,6 +1,7 @@
 // The union engine's pipeline: cull, intersect, split, classify, stitch (paper §2.2-2.4).
 #include "molsurf/boolean.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 
@@ -10,10 +11,12 @@
 #include "boolean/cull.hpp"
 #include "boolean/intersect.hpp"
 #include "boolean/operands.hpp"
+#include "boolean/repair_rounding.hpp"
 #include "boolean/outer_envelope.hpp"
 #include "boolean/split.hpp"
 #include "boolean/stitch.hpp"
 #include "common/parallel_exceptions.hpp"
+#include "geometry/triangle_intersection.hpp"
 
 namespace molsurf {
 
@@ -139,6 +142,38 @@ BooleanResult union_outer_envelope(const Mesh& a, const Mesh& b) {
   return result;
 }
 
+namespace {
+
+// Whether a face of the active part's result that rounding can have turned over (a sliver
+// or a tiny face) crosses a passive face at a vertex they share (exact). Faces
+// [0, active_faces) and vertices [0, active_vertices) are the active part's.
+bool passive_face_crossed(const Mesh& out, std::size_t active_faces, std::size_t active_vertices) {
+  std::vector<std::pair<Index, std::uint32_t>> shared;  // (vertex, passive face)
+  for (std::size_t g = active_faces; g < out.faces.size(); ++g)
+    for (Index v : out.faces[g])
+      if (v < active_vertices) shared.emplace_back(v, static_cast<std::uint32_t>(g));
+  if (shared.empty()) return false;
+  std::sort(shared.begin(), shared.end());
+  for (std::size_t f = 0; f < active_faces; ++f) {
+    const Triangle& t = out.faces[f];
+    bool at_shared = false;
+    for (Index v : t)
+      at_shared |= std::binary_search(shared.begin(), shared.end(), std::pair<Index, std::uint32_t>{v, 0},
+                                      [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (!at_shared || !boolean_engine::may_turn_over(out, t)) continue;
+    for (Index v : t) {
+      auto it = std::lower_bound(shared.begin(), shared.end(), std::pair<Index, std::uint32_t>{v, 0});
+      for (; it != shared.end() && it->first == v; ++it)
+        if (geometry::classify_triangle_pair(out, t, out.faces[it->second]) ==
+            geometry::TrianglePairRelation::intersecting)
+          return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   using namespace boolean_engine;
   BooleanResult result;
@@ -173,6 +208,7 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   // union and difference), those of b outside a (kept by union only).
   Mesh& out = result.mesh;
   out = std::move(stitched.mesh);
+  const std::size_t stitched_faces = out.faces.size(), stitched_vertices = out.vertices.size();
   result.face_operand = std::move(stitched.face_operand);
   result.face_source = std::move(stitched.face_source);
   for (std::size_t k = 0; k < result.face_source.size(); ++k) {
@@ -215,6 +251,15 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
       result.face_source.push_back(f);
       if (tagged) out.face_tags.push_back(m.tag(f));
     }
+  }
+  if (passive_face_crossed(out, stitched_faces, stitched_vertices)) {
+    // The rounding repair saw only the active part: a fold at a vertex it shares with the
+    // passive faces can cross one of them. Redo it whole, where the repair sees them.
+    stats.whole_reruns = 1;
+    stats.active_faces = a.faces.size() + b.faces.size();
+    take_whole(result, run_steps(a, b, a, b, boxes, op, stats, timer));
+    stats.output_faces = result.mesh.faces.size();
+    return result;
   }
   stats.output_faces = out.faces.size();
   stats.seconds.stitch += timer.lap();

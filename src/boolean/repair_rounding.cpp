@@ -46,8 +46,6 @@ bool is_tiny(const Mesh& m, const Triangle& t) {
   return dot(n, n) < reach * reach * longest2;  // height = |n| / longest edge
 }
 
-// A face that rounding can have turned over (see kSliverDeg).
-bool may_turn_over(const Mesh& m, const Triangle& t) { return is_sliver(m, t) || is_tiny(m, t); }
 
 bool degenerate(const Mesh& m, const Triangle& t) {
   if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
@@ -557,6 +555,8 @@ class Repairer {
 };
 
 }  // namespace
+
+bool may_turn_over(const Mesh& m, const Triangle& t) { return is_sliver(m, t) || is_tiny(m, t); }
 
 RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
                               std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded,

@@ -22,6 +22,11 @@
 namespace molsurf::boolean_engine {
 
 
+// A face that rounding can have turned over: a sliver (smallest angle under 0.1 degree) or
+// a face whose height is within a few dozen ulps of its coordinates. Selects faces for the
+// exact crossing test; decides nothing.
+bool may_turn_over(const Mesh& mesh, const Triangle& t);
+
 struct RepairOutcome {
   std::size_t degenerate_left = 0;  // faces still degenerate afterwards (0 unless blocked)
   std::size_t refused_frozen = 0;   // repairs not done because they would touch a frozen vertex
