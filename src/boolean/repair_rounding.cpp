@@ -52,14 +52,6 @@ bool degenerate(const Mesh& m, const Triangle& t) {
   return geometry::collinear3d(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
 }
 
-// Every coordinate of a and b within one ulp of the largest coordinate of either.
-bool within_an_ulp(const Vec3& a, const Vec3& b) {
-  const double scale = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x), std::fabs(b.y),
-                                 std::fabs(b.z)});
-  const double ulp = scale * std::numeric_limits<double>::epsilon();
-  return std::fabs(a.x - b.x) <= ulp && std::fabs(a.y - b.y) <= ulp && std::fabs(a.z - b.z) <= ulp;
-}
-
 // Strictly between a and b on their common line (collinearity assumed).
 bool strictly_between(const Vec3& a, const Vec3& x, const Vec3& b) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -202,13 +194,6 @@ class Repairer {
     for (int i = 0; i < 3; ++i) {
       const Index u = t[i], v = t[(i + 1) % 3];
       if (u != v && m_.vertices[u] == m_.vertices[v]) return collapse(u, v) || unblocked_collapse(u, v);
-    }
-    // Corners closer than an ulp of the coordinates' scale (a coordinate near zero keeps
-    // digits that the others cannot: exact points an ulp apart at the scale of the face
-    // land 1e-17 apart there, all on one line): as good as one position.
-    for (int i = 0; i < 3; ++i) {
-      const Index u = t[i], v = t[(i + 1) % 3];
-      if (u != v && within_an_ulp(m_.vertices[u], m_.vertices[v])) return collapse(u, v) || unblocked_collapse(u, v);
     }
     for (int i = 0; i < 3; ++i) {
       const Index c = t[i], a = t[(i + 1) % 3], b = t[(i + 2) % 3];
