@@ -6,8 +6,8 @@
 #include <numbers>
 #include <numeric>
 #include <tuple>
-#include <unordered_map>
 
+#include "geometry/point_grid.hpp"
 #include "molsurf/icosphere.hpp"
 
 namespace molsurf::surface_detail {
@@ -182,41 +182,21 @@ NeighbourList find_neighbours(const AtomPolyhedra& polyhedra) {
   list.first.assign(n + 1, 0);
   if (n == 0) return list;
   double largest = 0;
-  BoundingBox box;
+  std::vector<Vec3> centres(n);
   for (std::size_t i = 0; i < n; ++i) {
     largest = std::max(largest, polyhedra.circumradius(i));
-    box.extend(polyhedra.centre(i));
+    centres[i] = polyhedra.centre(i);
   }
-  // Cells of the largest diameter: a neighbour is at most one cell away on each axis.
-  const double cell = std::max(2 * largest, 1e-6);
-  auto cell_of = [&](const Vec3& p) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor((p.x - box.min.x) / cell)),
-                                       static_cast<std::int64_t>(std::floor((p.y - box.min.y) / cell)),
-                                       static_cast<std::int64_t>(std::floor((p.z - box.min.z) / cell))};
-  };
-  auto pack = [](const std::array<std::int64_t, 3>& c) {
-    return static_cast<std::uint64_t>(c[0]) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(c[1]) * 0xC2B2AE3D27D4EB4Full ^
-           static_cast<std::uint64_t>(c[2]) * 0x165667B19E3779F9ull;
-  };
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!polyhedra.duplicate(i)) cells[pack(cell_of(polyhedra.centre(i)))].push_back(static_cast<std::uint32_t>(i));
+  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return !polyhedra.duplicate(i); });
   std::vector<std::vector<std::uint32_t>> rows(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (polyhedra.duplicate(i)) continue;
-    const auto c = cell_of(polyhedra.centre(i));
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find(pack({c[0] + dx, c[1] + dy, c[2] + dz}));
-          if (it == cells.end()) continue;
-          for (std::uint32_t j : it->second) {
-            if (j == i) continue;
-            const Vec3 d = polyhedra.centre(j) - polyhedra.centre(i);
-            const double reach = polyhedra.circumradius(i) + polyhedra.circumradius(j);
-            if (dot(d, d) <= reach * reach * (1 + 1e-9)) rows[i].push_back(j);
-          }
-        }
+    grid.for_each_near(centres[i], [&](std::uint32_t j) {
+      if (j == i) return;
+      const Vec3 d = centres[j] - centres[i];
+      const double reach = polyhedra.circumradius(i) + polyhedra.circumradius(j);
+      if (dot(d, d) <= reach * reach * (1 + 1e-9)) rows[i].push_back(j);
+    });
     std::sort(rows[i].begin(), rows[i].end());
     rows[i].erase(std::unique(rows[i].begin(), rows[i].end()), rows[i].end());
   }

@@ -6,47 +6,15 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "common/parallel_exceptions.hpp"
+#include "geometry/point_grid.hpp"
 
 namespace molsurf {
 
 namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
-
-// Balls by cells of a grid as wide as the largest diameter: neighbours are in the 27 cells
-// around.
-class BallGrid {
- public:
-  BallGrid(std::span<const Vec3> centres, double cell) : centres_(centres), inverse_(1 / cell) {
-    for (std::size_t i = 0; i < centres.size(); ++i) cells_[key(cell_of(centres[i]))].push_back(i);
-  }
-  std::vector<std::size_t> near(const Vec3& p) const {
-    std::vector<std::size_t> out;
-    const auto c = cell_of(p);
-    for (long dx = -1; dx <= 1; ++dx)
-      for (long dy = -1; dy <= 1; ++dy)
-        for (long dz = -1; dz <= 1; ++dz)
-          if (auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz})); it != cells_.end())
-            out.insert(out.end(), it->second.begin(), it->second.end());
-    return out;
-  }
-
- private:
-  std::array<long, 3> cell_of(const Vec3& p) const {
-    return {static_cast<long>(std::floor(p.x * inverse_)), static_cast<long>(std::floor(p.y * inverse_)),
-            static_cast<long>(std::floor(p.z * inverse_))};
-  }
-  static std::uint64_t key(const std::array<long, 3>& c) {
-    return (std::uint64_t(c[0] & 0x1fffff) << 42) | (std::uint64_t(c[1] & 0x1fffff) << 21) |
-           std::uint64_t(c[2] & 0x1fffff);
-  }
-  std::span<const Vec3> centres_;
-  double inverse_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
-};
 
 struct Arc {
   double from, to;  // radians, from < to, within [0, 2 pi]
@@ -60,7 +28,7 @@ BallUnionMeasure measure_ball_union(std::span<const Vec3> centres, std::span<con
   m.area_per_ball.assign(centres.size(), 0);
   if (centres.empty()) return m;
   const double largest = *std::max_element(radii.begin(), radii.end());
-  const BallGrid grid(centres, 2 * largest);
+  const geometry::PointGrid grid(centres, 2 * largest);
   std::vector<double> volume_per_ball(centres.size(), 0);
 
   ParallelExceptions errors;
@@ -71,18 +39,18 @@ BallUnionMeasure measure_ball_union(std::span<const Vec3> centres, std::span<con
       const double r = radii[i];
       std::vector<std::size_t> others;
       bool buried = false;
-      for (std::size_t j : grid.near(c)) {
-        if (static_cast<std::int64_t>(j) == i) continue;
+      grid.for_each_near(c, [&](std::size_t j) {
+        if (buried || static_cast<std::int64_t>(j) == i) return;
         const double d = norm(centres[j] - c);
-        if (d >= r + radii[j]) continue;
+        if (d >= r + radii[j]) return;
         // Inside another ball (or an identical copy later in the list): nothing exposed.
         if (d + r < radii[j] || (d == 0 && r == radii[j] && static_cast<std::int64_t>(j) < i)) {
           buried = true;
-          break;
+          return;
         }
-        if (d + radii[j] <= r) continue;  // that ball is inside this one: it covers nothing of its sphere
+        if (d + radii[j] <= r) return;  // that ball is inside this one: it covers nothing of its sphere
         others.push_back(j);
-      }
+      });
       if (buried) return;
       const double dz = 2 * r / slices;
       double area = 0, volume = 0;
