@@ -5,6 +5,7 @@
 #include "mesh/topology.hpp"
 #include <numeric>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -31,39 +32,45 @@ bool inside_partner(const Operands& ops, const Arrangement& arr, const SubFace& 
   return true;
 }
 
-Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, const SplitResult& split) {
-  const std::vector<SubFace>& subs = split.sub_faces;
-  const auto& intersection_edges = split.intersection_edges;
-  Classification result;
+namespace {
+
+// Each sub-face that lies in a coplanar face of the other operand is coincident with it:
+// its side is set in `side`; the returned flags mark those sub-faces.
+std::vector<std::uint8_t> mark_coincident(const Operands& ops, const Arrangement& arr, std::span<const SubFace> subs,
+                                          std::vector<Side>& side) {
   const auto n = static_cast<std::uint32_t>(subs.size());
-  result.side.assign(n, Side::outside);
   std::vector<std::uint8_t> coincident(n, 0);
   for (std::uint32_t s = 0; s < n; ++s)
     for (const Arrangement::Partner& partner : arr.coplanar_partners[subs[s].face])
       if (inside_partner(ops, arr, subs[s], partner.face)) {
         coincident[s] = 1;
-        result.side[s] = partner.same_orientation ? Side::coincident_same : Side::coincident_opposite;
+        side[s] = partner.same_orientation ? Side::coincident_same : Side::coincident_opposite;
         break;
       }
+  return coincident;
+}
 
-  // Patches: sub-faces of one operand joined across edges that are not on an
-  // intersection curve.
-  // An edge is on a curve only if both its ends are on both surfaces (cheap to test first).
-  auto on_curve = [&](std::uint32_t a, std::uint32_t b) {
-    if (!arr.on_both_surfaces[a] || !arr.on_both_surfaces[b]) return false;
-    return std::binary_search(intersection_edges.begin(), intersection_edges.end(),
-                              std::pair<std::uint32_t, std::uint32_t>(std::min(a, b), std::max(a, b)));
-  };
-  DisjointSets patches(n);
-  auto unite = [&](std::uint32_t x, std::uint32_t y) { patches.unite(x, y); };
-  // Pieces of cut faces meet along point-id edges: sorted (edge, operand, piece) records
-  // pair them (few). Whole faces meet their neighbours across input edges: the operands'
-  // edge table joins them directly.
-  struct PieceEdge {
-    std::uint64_t key;
-    std::uint32_t operand_and_piece;  // operand in the top bit
-    auto operator<=>(const PieceEdge&) const = default;
-  };
+// An edge is on an intersection curve only if both its ends are on both surfaces (cheap
+// to test first).
+bool on_intersection_curve(const Arrangement& arr, const SplitResult& split, std::uint32_t a, std::uint32_t b) {
+  if (!arr.on_both_surfaces[a] || !arr.on_both_surfaces[b]) return false;
+  return std::binary_search(split.intersection_edges.begin(), split.intersection_edges.end(),
+                            std::pair<std::uint32_t, std::uint32_t>(std::min(a, b), std::max(a, b)));
+}
+
+// An edge of a piece of a cut face, off the intersection curves.
+struct PieceEdge {
+  std::uint64_t key;
+  std::uint32_t operand_and_piece;  // operand in the top bit
+  auto operator<=>(const PieceEdge&) const = default;
+};
+
+// Pieces of cut faces meet along point-id edges: sorted (edge, operand, piece) records
+// pair them (few). Unites the pieces of one operand that share such an edge, and returns
+// the records for the whole faces to find their neighbouring pieces in.
+std::vector<PieceEdge> unite_cut_pieces(const Operands& ops, const Arrangement& arr, const SplitResult& split,
+                                        std::span<const std::uint8_t> coincident, DisjointSets& patches) {
+  const std::vector<SubFace>& subs = split.sub_faces;
   std::vector<PieceEdge> piece_edges;
   for (std::uint32_t f = 0; f < ops.face_count(); ++f) {
     if (!split.cut[f]) continue;
@@ -72,7 +79,7 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
       if (coincident[s]) continue;
       for (int i = 0; i < 3; ++i) {
         const std::uint32_t a = subs[s].points[i], b = subs[s].points[(i + 1) % 3];
-        if (on_curve(a, b)) continue;
+        if (on_intersection_curve(arr, split, a, b)) continue;
         piece_edges.push_back({undirected_edge_key(a, b), operand << 31 | s});
       }
     }
@@ -81,7 +88,15 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
   for (std::size_t k = 1; k < piece_edges.size(); ++k)
     if (piece_edges[k].key == piece_edges[k - 1].key &&
         piece_edges[k].operand_and_piece >> 31 == piece_edges[k - 1].operand_and_piece >> 31)
-      unite(piece_edges[k].operand_and_piece & 0x7fffffffu, piece_edges[k - 1].operand_and_piece & 0x7fffffffu);
+      patches.unite(piece_edges[k].operand_and_piece & 0x7fffffffu, piece_edges[k - 1].operand_and_piece & 0x7fffffffu);
+  return piece_edges;
+}
+
+// Whole faces meet their neighbours across input edges: the operands' edge table joins
+// them directly, to a whole neighbour or to the piece of a cut one on that edge.
+void unite_whole_faces(const Operands& ops, const Arrangement& arr, const SplitResult& split,
+                       std::span<const std::uint8_t> coincident, std::span<const PieceEdge> piece_edges,
+                       DisjointSets& patches) {
   auto piece_on_edge = [&](std::uint32_t operand, std::uint64_t key) -> std::uint32_t {
     const auto it = std::lower_bound(piece_edges.begin(), piece_edges.end(), PieceEdge{key, operand << 31});
     if (it == piece_edges.end() || it->key != key || it->operand_and_piece >> 31 != operand) return ~0u;
@@ -98,92 +113,142 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
       if (g == kNoFace) continue;  // the rest of the solid, outside the other's box
       const auto& ends = ops.edge_vertices(e);
       const std::uint32_t a = arr.vertex_point[ends[0]], b = arr.vertex_point[ends[1]];
-      if (on_curve(a, b)) continue;
+      if (on_intersection_curve(arr, split, a, b)) continue;
       if (!split.cut[g]) {
-        if (f < g && !coincident[split.first_sub_face[g]]) unite(s, split.first_sub_face[g]);
+        if (f < g && !coincident[split.first_sub_face[g]]) patches.unite(s, split.first_sub_face[g]);
       } else if (const std::uint32_t piece = piece_on_edge(operand, undirected_edge_key(a, b)); piece != ~0u) {
-        unite(s, piece);
+        patches.unite(s, piece);
       }
     }
   }
+}
 
-  // Members of each patch, patches in order of their lowest sub-face (deterministic).
+// Sub-faces grouped into patches, patches in order of their lowest sub-face (deterministic).
+struct Patches {
+  std::vector<std::uint32_t> members;   // the sub-faces, patch by patch, increasing within a patch
+  std::vector<std::uint32_t> begin;     // patch k: members[begin[k] .. begin[k + 1])
+  std::vector<std::uint32_t> patch_of;  // per sub-face
+
+  std::uint32_t count() const { return static_cast<std::uint32_t>(begin.size() - 1); }
+  std::uint32_t first_member(std::uint32_t k) const { return members[begin[k]]; }
+};
+
+// Patches: sub-faces of one operand joined across edges that are not on an intersection
+// curve.
+Patches find_patches(const Operands& ops, const Arrangement& arr, const SplitResult& split,
+                     std::span<const std::uint8_t> coincident) {
+  const auto n = static_cast<std::uint32_t>(split.sub_faces.size());
+  DisjointSets sets(n);
+  const std::vector<PieceEdge> piece_edges = unite_cut_pieces(ops, arr, split, coincident, sets);
+  unite_whole_faces(ops, arr, split, coincident, piece_edges, sets);
+
   std::vector<std::uint32_t> root(n);
-  for (std::uint32_t s = 0; s < n; ++s) root[s] = patches.find(s);
+  for (std::uint32_t s = 0; s < n; ++s) root[s] = sets.find(s);
   // Sub-faces grouped by root, in increasing index within a group (a counting sort: the
   // roots are sub-face indices).
-  std::vector<std::uint32_t> members(n), first_of_root(n + 1, 0);
+  Patches patches;
+  patches.members.resize(n);
+  patches.patch_of.resize(n);
+  std::vector<std::uint32_t> first_of_root(n + 1, 0);
   for (std::uint32_t s = 0; s < n; ++s) ++first_of_root[root[s] + 1];
   for (std::uint32_t r = 0; r < n; ++r) first_of_root[r + 1] += first_of_root[r];
-  for (std::uint32_t s = 0; s < n; ++s) members[first_of_root[root[s]]++] = s;
-  std::vector<std::uint32_t> patch_begin;  // patch k: members[patch_begin[k] .. patch_begin[k + 1])
-  std::vector<std::uint32_t> patch_of(n);
+  for (std::uint32_t s = 0; s < n; ++s) patches.members[first_of_root[root[s]]++] = s;
   for (std::uint32_t k = 0; k < n; ++k) {
-    if (k == 0 || root[members[k]] != root[members[k - 1]]) patch_begin.push_back(k);
-    patch_of[members[k]] = static_cast<std::uint32_t>(patch_begin.size() - 1);
+    if (k == 0 || root[patches.members[k]] != root[patches.members[k - 1]]) patches.begin.push_back(k);
+    patches.patch_of[patches.members[k]] = static_cast<std::uint32_t>(patches.begin.size() - 1);
   }
-  const auto patch_count = static_cast<std::uint32_t>(patch_begin.size());
-  patch_begin.push_back(n);
+  patches.begin.push_back(n);
+  return patches;
+}
 
-  // Verdicts: -1 unknown, 0 outside, 1 inside the other solid.
-  std::vector<std::int8_t> verdict(patch_count, -1);
-  // Seeds: an input vertex of the patch's own operand strictly outside the other solid's
-  // box is outside the other solid (comparisons of doubles: exact).
+// Verdicts: -1 unknown, 0 outside, 1 inside the other solid.
+using Verdict = std::int8_t;
+
+// Seeds: an input vertex of the patch's own operand strictly outside the other solid's
+// box is outside the other solid (comparisons of doubles: exact).
+std::vector<Verdict> seed_verdicts(const Operands& ops, std::span<const SubFace> subs, const Patches& patches,
+                                   std::span<const std::uint8_t> coincident) {
   auto strictly_outside = [](const BoundingBox& box, const Vec3& p) {
     return p.x < box.min.x || p.x > box.max.x || p.y < box.min.y || p.y > box.max.y || p.z < box.min.z ||
            p.z > box.max.z;
   };
-  for (std::uint32_t k = 0; k < patch_count; ++k) {
-    const std::uint32_t first = members[patch_begin[k]];
+  std::vector<Verdict> verdict(patches.count(), -1);
+  for (std::uint32_t k = 0; k < patches.count(); ++k) {
+    const std::uint32_t first = patches.first_member(k);
     if (coincident[first]) continue;
     const int operand = ops.operand_of_face(subs[first].face);
     const BoundingBox& other_box = ops.solid_box(1 - operand);
-    for (std::uint32_t m = patch_begin[k]; m < patch_begin[k + 1] && verdict[k] < 0; ++m)
-      for (std::uint32_t p : subs[members[m]].points)
+    for (std::uint32_t m = patches.begin[k]; m < patches.begin[k + 1] && verdict[k] < 0; ++m)
+      for (std::uint32_t p : subs[patches.members[m]].points)
         if (p < ops.vertex_count() && ops.operand_of_vertex(p) == operand && strictly_outside(other_box, ops.vertex(p))) {
           verdict[k] = 0;
           break;
         }
   }
+  return verdict;
+}
 
-  // Patches on the two sides of a transversal crossing have opposite verdicts.
-  std::vector<std::vector<std::uint32_t>> opposite(patch_count);
+// Patches on the two sides of a transversal crossing have opposite verdicts: per patch,
+// the patches across from it.
+std::vector<std::vector<std::uint32_t>> opposite_patches(const SplitResult& split, const Patches& patches,
+                                                         std::span<const std::uint8_t> coincident) {
+  std::vector<std::vector<std::uint32_t>> opposite(patches.count());
   for (auto [x, y] : split.opposite_sides) {
     if (coincident[x] || coincident[y]) continue;
-    opposite[patch_of[x]].push_back(patch_of[y]);
-    opposite[patch_of[y]].push_back(patch_of[x]);
+    opposite[patches.patch_of[x]].push_back(patches.patch_of[y]);
+    opposite[patches.patch_of[y]].push_back(patches.patch_of[x]);
   }
+  return opposite;
+}
 
-  // Exact ray parity against the other whole solid, for patches nothing else decides; the
-  // search tree over that solid is built on first use only.
-  std::optional<geometry::RayParity> rays[2];
-  auto ray_verdict = [&](std::uint32_t k) -> std::int8_t {
-    const std::uint32_t first = members[patch_begin[k]];
-    const int operand = ops.operand_of_face(subs[first].face);
-    if (!rays[operand]) rays[operand].emplace(ops.solid(1 - operand));
-    ++result.ray_casts;
+// Exact ray parity against the other whole solid, for patches nothing else decides; the
+// search tree over that solid is built on first use only. Counts its casts in `result`.
+class PatchRays {
+ public:
+  PatchRays(const Operands& ops, const Arrangement& arr, std::span<const SubFace> subs, const Patches& patches,
+            Classification& result)
+      : ops_(ops), arr_(arr), subs_(subs), patches_(patches), result_(result) {}
+
+  Verdict verdict(std::uint32_t k) {
+    const std::uint32_t first = patches_.first_member(k);
+    const int operand = ops_.operand_of_face(subs_[first].face);
+    if (!rays_[operand]) rays_[operand].emplace(ops_.solid(1 - operand));
+    ++result_.ray_casts;
     // Fast path: an input vertex of this operand in the patch, not on the other surface.
-    for (std::uint32_t m = patch_begin[k]; m < patch_begin[k + 1]; ++m)
-      for (std::uint32_t p : subs[members[m]].points)
-        if (p < ops.vertex_count() && !arr.on_both_surfaces[p] && ops.operand_of_vertex(p) == operand)
-          return rays[operand]->inside(ops.vertex(p));
-    const geometry::ExactPoint p0 = arr.points[subs[first].points[0]].exact();
-    const geometry::ExactPoint p1 = arr.points[subs[first].points[1]].exact();
-    const geometry::ExactPoint p2 = arr.points[subs[first].points[2]].exact();
+    for (std::uint32_t m = patches_.begin[k]; m < patches_.begin[k + 1]; ++m)
+      for (std::uint32_t p : subs_[patches_.members[m]].points)
+        if (p < ops_.vertex_count() && !arr_.on_both_surfaces[p] && ops_.operand_of_vertex(p) == operand)
+          return rays_[operand]->inside(ops_.vertex(p));
+    const geometry::ExactPoint p0 = arr_.points[subs_[first].points[0]].exact();
+    const geometry::ExactPoint p1 = arr_.points[subs_[first].points[1]].exact();
+    const geometry::ExactPoint p2 = arr_.points[subs_[first].points[2]].exact();
     const geometry::ExactPoint centroid{(p0.x + p1.x + p2.x) / 3, (p0.y + p1.y + p2.y) / 3,
                                         (p0.z + p1.z + p2.z) / 3};
-    ++result.exact_ray_casts;
-    return rays[operand]->inside(centroid);
-  };
+    ++result_.exact_ray_casts;
+    return rays_[operand]->inside(centroid);
+  }
 
-  // One connected group of patches (joined by opposite-side relations) at a time: from
-  // its seeds, or else from one ray, the verdicts alternate across each crossing. A
-  // contradiction (possible only where the crossings are degenerate) sends every patch
-  // of the group to its own ray.
+ private:
+  const Operands& ops_;
+  const Arrangement& arr_;
+  std::span<const SubFace> subs_;
+  const Patches& patches_;
+  Classification& result_;
+  std::optional<geometry::RayParity> rays_[2];
+};
+
+// One connected group of patches (joined by opposite-side relations) at a time: from
+// its seeds, or else from one ray, the verdicts alternate across each crossing. A
+// contradiction (possible only where the crossings are degenerate) sends every patch
+// of the group to its own ray.
+void propagate_verdicts(const Patches& patches, std::span<const std::uint8_t> coincident,
+                        std::span<const std::vector<std::uint32_t>> opposite, PatchRays& rays,
+                        std::vector<Verdict>& verdict) {
+  const std::uint32_t patch_count = patches.count();
   std::vector<std::uint8_t> visited(patch_count, 0);
   std::vector<std::uint32_t> group, queue;
   for (std::uint32_t k = 0; k < patch_count; ++k) {
-    if (visited[k] || coincident[members[patch_begin[k]]]) continue;
+    if (visited[k] || coincident[patches.first_member(k)]) continue;
     group.clear();
     group.push_back(k);
     visited[k] = 1;
@@ -198,13 +263,13 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
     for (std::uint32_t j : group)
       if (verdict[j] >= 0) queue.push_back(j);
     if (queue.empty()) {
-      verdict[group[0]] = ray_verdict(group[0]);
+      verdict[group[0]] = rays.verdict(group[0]);
       queue.push_back(group[0]);
     }
     bool contradiction = false;
     for (std::size_t i = 0; i < queue.size() && !contradiction; ++i)
       for (std::uint32_t j : opposite[queue[i]]) {
-        const auto flipped = static_cast<std::int8_t>(1 - verdict[queue[i]]);
+        const auto flipped = static_cast<Verdict>(1 - verdict[queue[i]]);
         if (verdict[j] < 0) {
           verdict[j] = flipped;
           queue.push_back(j);
@@ -214,10 +279,25 @@ Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, c
         }
       }
     if (contradiction)
-      for (std::uint32_t j : group) verdict[j] = ray_verdict(j);
+      for (std::uint32_t j : group) verdict[j] = rays.verdict(j);
   }
+}
+
+}  // namespace
+
+Classification classify_sub_faces(const Operands& ops, const Arrangement& arr, const SplitResult& split) {
+  const std::vector<SubFace>& subs = split.sub_faces;
+  Classification result;
+  const auto n = static_cast<std::uint32_t>(subs.size());
+  result.side.assign(n, Side::outside);
+  const std::vector<std::uint8_t> coincident = mark_coincident(ops, arr, subs, result.side);
+  const Patches patches = find_patches(ops, arr, split, coincident);
+  std::vector<Verdict> verdict = seed_verdicts(ops, subs, patches, coincident);
+  const std::vector<std::vector<std::uint32_t>> opposite = opposite_patches(split, patches, coincident);
+  PatchRays rays(ops, arr, subs, patches, result);
+  propagate_verdicts(patches, coincident, opposite, rays, verdict);
   for (std::uint32_t s = 0; s < n; ++s)
-    if (!coincident[s]) result.side[s] = verdict[patch_of[s]] == 1 ? Side::inside : Side::outside;
+    if (!coincident[s]) result.side[s] = verdict[patches.patch_of[s]] == 1 ? Side::inside : Side::outside;
   return result;
 }
 
