@@ -2,8 +2,9 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <optional>
 #include <cstdio>
+#include <optional>
+#include <span>
 #include <iostream>
 #include <sstream>
 
@@ -186,52 +187,183 @@ std::string format_volume_mesh_report(const VolumeMeshReport& v, const std::file
   return text;
 }
 
-}  // namespace
-
-int SurfaceCommand::run() const {
-  std::filesystem::path out = output;
-  if (out.empty() && output_option->count() == 0) {
-    std::filesystem::path stem = structure.filename();
+// -o, or STEM.vtp in the current directory when it is not given at all.
+std::filesystem::path surface_output_path(const SurfaceCommand& command) {
+  std::filesystem::path out = command.output;
+  if (out.empty() && command.output_option->count() == 0) {
+    std::filesystem::path stem = command.structure.filename();
     while (stem.has_extension()) stem = stem.stem();  // 1crn.cif.gz -> 1crn
     out = stem.string() + ".vtp";
   }
-  // Every output checked before any work: a wrong path costs nothing.
+  return out;
+}
+
+// Every output the options ask for, the surface first; refuses a volume mesh that cannot be made.
+std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, const std::filesystem::path& out) {
   std::vector<OutputRequest> outputs{{out, "-o", true}};
-  if (json_option->count() > 0) outputs.push_back({json, "--json"});
-  if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
-  if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
-  if (volume_option->count() > 0) {
-    outputs.push_back({volume_mesh, "--volume-mesh", true});
-    if (volume_mesh.extension() != ".msh")
-      throw Error("--volume-mesh: " + volume_mesh.string() + " must end in .msh (gmsh 2.2, the one format written)");
+  if (command.json_option->count() > 0) outputs.push_back({command.json, "--json"});
+  if (command.per_atom_option->count() > 0) outputs.push_back({command.per_atom, "--per-atom"});
+  if (command.per_residue_option->count() > 0) outputs.push_back({command.per_residue, "--per-residue"});
+  if (command.volume_option->count() > 0) {
+    outputs.push_back({command.volume_mesh, "--volume-mesh", true});
+    if (command.volume_mesh.extension() != ".msh")
+      throw Error("--volume-mesh: " + command.volume_mesh.string() +
+                  " must end in .msh (gmsh 2.2, the one format written)");
     if (!volume_mesh_available())
       throw Error("--volume-mesh: this molsurf was built without gmsh, which makes the volume mesh "
                   "(Debian: libgmsh-dev; build again)");
   }
-  const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
-  check_output_paths(inputs, outputs);
-  // Reject an unknown extension, and options that do not apply to it, before any work.
+  return outputs;
+}
+
+// Rejects an unknown extension, and options that do not apply to it, before any work.
+void check_format_options(const SurfaceCommand& command, const std::filesystem::path& out) {
   const MeshFormat format = mesh_format_from_path(out);
-  if (ascii && format != MeshFormat::ply && format != MeshFormat::stl)
+  if (command.ascii && format != MeshFormat::ply && format != MeshFormat::stl)
     throw Error("--ascii: -o " + out.string() + " is " + mesh_format_name(format) +
                 ", which has one form only; --ascii is for .ply and .stl");
-  if (no_header && format != MeshFormat::msms)
+  if (command.no_header && format != MeshFormat::msms)
     throw Error("--no-header: -o " + out.string() + " is " + mesh_format_name(format) +
                 ", which has no MSMS header; --no-header is for .vert/.face");
+}
+
+// The read options with --chains split at its commas.
+ReadOptions read_options(const SurfaceCommand& command) {
+  ReadOptions options = command.read;
+  std::stringstream list(command.chains);
+  for (std::string chain; std::getline(list, chain, ',');)
+    if (!chain.empty()) options.chains.push_back(chain);
+  return options;
+}
+
+// --threads for every parallel loop, the engine's too.
+void use_threads(const SurfaceCommand& command) {
+  if (command.threads > 0) omp_set_num_threads(command.threads);
+  if (command.threads > omp_get_num_procs() && !command.quiet)
+    std::cerr << "molsurf: note: --threads " << command.threads << " is more than the " << omp_get_num_procs()
+              << " cores available: the result is the same, but not faster\n";
+}
+
+ComputeSurfaceOptions surface_compute_options(const SurfaceCommand& command) {
+  ComputeSurfaceOptions options;
+  options.spheres = command.spheres;
+  options.method = command.method == "pairwise" ? SurfaceMethod::pairwise : SurfaceMethod::one_pass;
+  options.threads = command.threads;
+  options.outer_only = command.outer_only;
+  options.cleanup = !command.skip_cleanup;
+  options.check_self_intersections = !command.skip_check;
+  options.max_sphere_faces = command.max_faces;
+  if (command.max_memory_gb > 0) options.max_memory = static_cast<std::uint64_t>(command.max_memory_gb * 1e9);
+  options.source = command.structure;
+  return options;
+}
+
+// The surface, with a progress bar unless quiet; a surface that fails its check is an
+// error that names `out`, which is then not written.
+ComputedSurface compute_with_progress(std::span<const Atom> atoms, ComputeSurfaceOptions options, bool quiet,
+                                      const std::filesystem::path& out) {
+  try {
+    ProgressBar bar(!quiet);  // erased when the call returns or throws
+    options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
+      if (stage == SurfaceStage::union_) bar.update(done, total);
+    };
+    return compute_surface(atoms, options);
+  } catch (const SurfaceCheckFailed& failed) {
+    if (!quiet)
+      for (const std::string& note : failed.notes()) std::cerr << "molsurf: note: " << note << "\n";
+    throw Error(out.string() + ": not written: " + failed.what());
+  }
+}
+
+MeshWriteOptions surface_write_options(const SurfaceCommand& command, std::span<const Atom> atoms) {
+  MeshWriteOptions options;
+  options.atoms = atoms;
+  options.probe_radius = command.spheres.probe;
+  options.density = command.spheres.density;
+  options.ascii = command.ascii;
+  options.msms_header = !command.no_header;
+  options.msms_atom_names = !command.no_header;
+  options.surface_description =
+      std::string(command.spheres.probe > 0 ? "solvent accessible surface" : "van der Waals surface") + " for " +
+      command.structure.filename().string();
+  return options;
+}
+
+// The report's description of the surface as the file holds it.
+void describe_written_surface(const SurfaceMeasures& measures, const ComputedSurface& computed,
+                              const WrittenCheck& written, SurfaceReport& report) {
+  report.faces = measures.faces;
+  report.vertices = measures.vertices;
+  report.area = measures.area;
+  report.volume = measures.volume;
+  report.components = measures.components;
+  report.quality = measures.quality;
+  report.cleanup = computed.cleanup;
+  report.valid = written.check.valid();
+  report.defects = written.check.defects();
+  report.threads = computed.threads;
+}
+
+// The surface's file, or with --split-components one file per component, whose names
+// are known only now: checked like every output before anything is written.
+void add_surface_files(const SurfaceCommand& command, const std::filesystem::path& out, const Mesh& surface,
+                       const WrittenCheck& written, const MeshCheckOptions& check_options,
+                       std::span<const std::filesystem::path> inputs, std::span<const OutputRequest> outputs,
+                       OutputFiles& files) {
+  if (!command.split_components) {
+    files.add_mesh(out, surface, written.options);
+    return;
+  }
+  const std::vector<SurfaceComponent> parts = molsurf::split_components(surface);
+  std::vector<OutputRequest> part_outputs(outputs.begin() + 1, outputs.end());
+  for (const SurfaceComponent& part : parts)
+    part_outputs.push_back({component_output_path(out, part), "--split-components", true});
+  check_output_paths(inputs, part_outputs);
+  for (const SurfaceComponent& part : parts)
+    files.add_checked_mesh(component_output_path(out, part), part.mesh, written.options, check_options);
+}
+
+// The tetrahedra around the surface (--volume-mesh), when asked for.
+std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, const Mesh& surface, std::ostream& text,
+                                                OutputFiles& files) {
+  if (command.volume_mesh.empty()) return std::nullopt;
+  if (!command.quiet) text << "volume mesh ..." << std::flush;
+  VolumeMeshOptions options;
+  options.box_margin = command.box_margin;
+  options.box_size = command.volume_size;
+  options.fill_inside = command.fill_inside;
+  VolumeMesh made = mesh_volume(surface, options);
+  if (!command.quiet) text << "\r";
+  files.add_text(command.volume_mesh, std::move(made.msh));
+  return made.report;
+}
+
+void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
+                   const std::filesystem::path& volume_mesh, std::span<const std::filesystem::path> written_files,
+                   std::ostream& text) {
+  text << "\n" << format_surface_report(report);
+  if (volume) text << format_volume_mesh_report(*volume, volume_mesh);
+  std::string list;
+  for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
+  text << "written: " << list << "\n";
+}
+
+}  // namespace
+
+int SurfaceCommand::run() const {
+  const std::filesystem::path out = surface_output_path(*this);
+  // Every output checked before any work: a wrong path costs nothing.
+  const std::vector<OutputRequest> outputs = requested_outputs(*this, out);
+  const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
+  check_output_paths(inputs, outputs);
+  check_format_options(*this, out);
   // With a report on standard output, the text report goes to standard error.
   bool report_to_stdout = false;
   for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
   std::ostream& text = report_to_stdout ? std::cerr : std::cout;
 
-  ReadOptions options = read;
-  std::stringstream list(chains);
-  for (std::string chain; std::getline(list, chain, ',');)
-    if (!chain.empty()) options.chains.push_back(chain);
-
-  if (threads > 0) omp_set_num_threads(threads);  // for every parallel loop, the engine's too
-  if (threads > omp_get_num_procs() && !quiet)
-    std::cerr << "molsurf: note: --threads " << threads << " is more than the " << omp_get_num_procs()
-              << " cores available: the result is the same, but not faster\n";
+  const ReadOptions options = read_options(*this);
+  use_threads(*this);
   SurfaceReport report;
   const auto read_start = std::chrono::steady_clock::now();
   const Structure s = read_structure(structure, options);
@@ -241,29 +373,7 @@ int SurfaceCommand::run() const {
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
   if (!quiet) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 
-  ComputeSurfaceOptions compute_options;
-  compute_options.spheres = spheres;
-  compute_options.method = method == "pairwise" ? SurfaceMethod::pairwise : SurfaceMethod::one_pass;
-  compute_options.threads = threads;
-  compute_options.outer_only = outer_only;
-  compute_options.cleanup = !skip_cleanup;
-  compute_options.check_self_intersections = !skip_check;
-  compute_options.max_sphere_faces = max_faces;
-  if (max_memory_gb > 0) compute_options.max_memory = static_cast<std::uint64_t>(max_memory_gb * 1e9);
-  compute_options.source = structure;
-  const ComputedSurface computed = [&] {
-    try {
-      ProgressBar bar(!quiet);  // erased when the call returns or throws
-      compute_options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
-        if (stage == SurfaceStage::union_) bar.update(done, total);
-      };
-      return compute_surface(s.atoms, compute_options);
-    } catch (const SurfaceCheckFailed& failed) {
-      if (!quiet)
-        for (const std::string& note : failed.notes()) std::cerr << "molsurf: note: " << note << "\n";
-      throw Error(out.string() + ": not written: " + failed.what());
-    }
-  }();
+  const ComputedSurface computed = compute_with_progress(s.atoms, surface_compute_options(*this), quiet, out);
   if (!quiet)
     for (const std::string& note : computed.notes) std::cerr << "molsurf: note: " << note << "\n";
   const Mesh& surface = computed.mesh;
@@ -271,15 +381,7 @@ int SurfaceCommand::run() const {
   report.seconds.cleanup = computed.seconds.cleanup;
   report.seconds.check = computed.seconds.check;
 
-  MeshWriteOptions write_options;
-  write_options.atoms = s.atoms;
-  write_options.probe_radius = spheres.probe;
-  write_options.density = spheres.density;
-  write_options.ascii = ascii;
-  write_options.msms_header = !no_header;
-  write_options.msms_atom_names = !no_header;
-  write_options.surface_description = std::string(spheres.probe > 0 ? "solvent accessible surface" : "van der Waals surface") +
-                                      " for " + structure.filename().string();
+  const MeshWriteOptions write_options = surface_write_options(*this, s.atoms);
   MeshCheckOptions check_options;
   check_options.self_intersections = !skip_check;
   // Lossy formats (.vert, .stl): the surface is checked again as the file will hold it.
@@ -293,59 +395,22 @@ int SurfaceCommand::run() const {
   // The report describes what the file holds: the rounded surface when the format rounds.
   const SurfaceMeasures measures =
       written.rounded ? measure_surface(*written.rounded, written.check, s.atoms.size()) : computed.measures;
-  report.faces = measures.faces;
-  report.vertices = measures.vertices;
-  report.area = measures.area;
-  report.volume = measures.volume;
-  report.components = measures.components;
-  report.quality = measures.quality;
-  report.cleanup = computed.cleanup;
-  report.valid = written.check.valid();
-  report.defects = written.check.defects();
+  describe_written_surface(measures, computed, written, report);
   report.input = s.report;
   report.spheres = spheres;
-  report.threads = computed.threads;
   report.output = out;
   report.outer_only = outer_only;
 
   // All or nothing: every file is complete before any replaces an old one.
   OutputFiles files;
-  if (split_components) {
-    // The parts' names are known only now: checked like every output before anything is written.
-    const std::vector<SurfaceComponent> parts = molsurf::split_components(surface);
-    std::vector<OutputRequest> part_outputs(outputs.begin() + 1, outputs.end());
-    for (const SurfaceComponent& part : parts)
-      part_outputs.push_back({component_output_path(out, part), "--split-components", true});
-    check_output_paths(inputs, part_outputs);
-    for (const SurfaceComponent& part : parts)
-      files.add_checked_mesh(component_output_path(out, part), part.mesh, written.options, check_options);
-  } else {
-    files.add_mesh(out, surface, written.options);
-  }
-  std::optional<VolumeMeshReport> volume;
-  if (!volume_mesh.empty()) {
-    if (!quiet) text << "volume mesh ..." << std::flush;
-    VolumeMeshOptions volume_options;
-    volume_options.box_margin = box_margin;
-    volume_options.box_size = volume_size;
-    volume_options.fill_inside = fill_inside;
-    VolumeMesh made = mesh_volume(surface, volume_options);
-    if (!quiet) text << "\r";
-    volume = made.report;
-    files.add_text(volume_mesh, std::move(made.msh));
-  }
+  add_surface_files(*this, out, surface, written, check_options, inputs, outputs, files);
+  const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, measures.atom_area));
   if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, measures.atom_area));
   report.seconds.write = computed.seconds.measures + seconds_since(clock);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
-  if (!quiet) {
-    text << "\n" << format_surface_report(report);
-    if (volume) text << format_volume_mesh_report(*volume, volume_mesh);
-    std::string list;
-    for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
-    text << "written: " << list << "\n";
-  }
+  if (!quiet) print_summary(report, volume, volume_mesh, written_files, text);
   return 0;
 }
 
