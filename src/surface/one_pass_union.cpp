@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -775,23 +776,13 @@ SurfaceSizeEstimate estimate_union_size(const AtomPolyhedra& polyhedra, const Ne
   return estimate;
 }
 
-}  // namespace
-
-OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
-                             const std::function<void(std::size_t, std::size_t)>& progress,
-                             const std::function<void(const SurfaceSizeEstimate&)>& check_size,
-                             std::uint64_t estimate_size_above) {
-  OnePassResult result;
-  auto start = Clock::now();
-  const AtomPolyhedra polyhedra(atoms, options);
-  const NeighbourList neighbours = find_neighbours(polyhedra);
-  if (check_size) {
-    std::uint64_t sphere_faces = 0;
-    for (std::size_t i = 0; i < polyhedra.size(); ++i) sphere_faces += polyhedra.shape(i).unit.faces.size();
-    if (sphere_faces > estimate_size_above) check_size(estimate_union_size(polyhedra, neighbours, threads));
-  }
-  const auto n = static_cast<std::int64_t>(atoms.size());
-  std::vector<AtomPieces> pieces(atoms.size());
+// Every atom's polyhedron trimmed by its neighbours, all atoms in parallel. `progress` (may
+// be empty) is called from thread 0 every 256 atoms, and once at the end.
+std::vector<AtomPieces> trim_atoms(const AtomPolyhedra& polyhedra, const NeighbourList& neighbours, int threads,
+                                   const std::function<void(std::size_t, std::size_t)>& progress) {
+  const std::size_t atom_count = polyhedra.size();
+  const auto n = static_cast<std::int64_t>(atom_count);
+  std::vector<AtomPieces> pieces(atom_count);
   ParallelExceptions errors;
   std::atomic<std::size_t> done{0};
 #pragma omp parallel num_threads(threads)
@@ -801,56 +792,66 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
     for (std::int64_t i = 0; i < n; ++i) {
       errors.run(i, [&] { pieces[i] = trimmer.trim(static_cast<std::uint32_t>(i)); });
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-      if (progress && omp_get_thread_num() == 0 && finished % 256 == 0) progress(finished, atoms.size());
+      if (progress && omp_get_thread_num() == 0 && finished % 256 == 0) progress(finished, atom_count);
     }
   }
   errors.rethrow();
-  if (progress) progress(atoms.size(), atoms.size());
-  result.stats.seconds_trim = seconds_since(start);
+  if (progress) progress(atom_count, atom_count);
+  return pieces;
+}
 
-  // Join: atoms in index order, points merged by definition, then points equal by exact
-  // value but defined differently (degenerate contacts) merged too: only points whose
-  // filter boxes overlap are compared exactly. The steps run in parallel where they are
-  // not linear scans, and number points as a serial scan would (in order of first
-  // appearance), so the mesh is the same for any thread count.
-  start = Clock::now();
-  Mesh& mesh = result.mesh;
-  const auto atom_count = static_cast<std::int64_t>(pieces.size());
-  // Each atom's points and faces take a range of one global sequence.
-  std::vector<std::size_t> point_start(pieces.size() + 1, 0), face_start(pieces.size() + 1, 0),
-      implicit_start(pieces.size() + 1, 0);
+// Each atom's points and faces take a range of one global sequence: atom i's points are
+// [point_start[i], point_start[i + 1]), and so on.
+struct SequenceRanges {
+  std::vector<std::size_t> point_start, face_start, implicit_start;
+};
+
+// The ranges, and the trim's counts added into `stats`.
+SequenceRanges sequence_ranges(std::span<const AtomPieces> pieces, OnePassStats& stats) {
+  SequenceRanges ranges;
+  ranges.point_start.assign(pieces.size() + 1, 0);
+  ranges.face_start.assign(pieces.size() + 1, 0);
+  ranges.implicit_start.assign(pieces.size() + 1, 0);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const AtomPieces& p = pieces[i];
-    result.stats.faces_inside += p.faces_inside;
-    result.stats.faces_whole += p.faces_whole;
-    result.stats.faces_cut += p.faces_cut;
-    result.stats.crossings += p.crossings;
-    point_start[i + 1] = point_start[i] + p.points.size();
-    face_start[i + 1] = face_start[i] + p.triangles.size();
-    implicit_start[i + 1] = implicit_start[i] + p.implicit_points;
+    stats.faces_inside += p.faces_inside;
+    stats.faces_whole += p.faces_whole;
+    stats.faces_cut += p.faces_cut;
+    stats.crossings += p.crossings;
+    ranges.point_start[i + 1] = ranges.point_start[i] + p.points.size();
+    ranges.face_start[i + 1] = ranges.face_start[i] + p.triangles.size();
+    ranges.implicit_start[i + 1] = ranges.implicit_start[i] + p.implicit_points;
   }
-  if (point_start.back() >= std::numeric_limits<std::uint32_t>::max())
+  if (ranges.point_start.back() >= std::numeric_limits<std::uint32_t>::max())
     throw Error("the union is too large to index: more than 4 billion points");
-  // Merge by definition: implicit points sorted by (hash, position); in a run of equal
-  // hashes, a point's representative is the first point of the run with its definition.
-  struct HashedPosition {
-    std::uint64_t hash;
-    std::uint32_t position;
-    bool operator<(const HashedPosition& o) const { return hash != o.hash ? hash < o.hash : position < o.position; }
-  };
-  std::vector<const PointDefinition*> sequence(point_start.back());
+  return ranges;
+}
+
+struct HashedPosition {
+  std::uint64_t hash;
+  std::uint32_t position;
+  bool operator<(const HashedPosition& o) const { return hash != o.hash ? hash < o.hash : position < o.position; }
+};
+
+// Merge by definition: implicit points sorted by (hash, position); in a run of equal
+// hashes, a point's representative is the first point of the run with its definition.
+// Per position of the global sequence, the position of its representative.
+std::vector<std::uint32_t> representatives_by_definition(std::span<const AtomPieces> pieces,
+                                                         const SequenceRanges& ranges, int threads) {
+  const auto atom_count = static_cast<std::int64_t>(pieces.size());
+  std::vector<const PointDefinition*> sequence(ranges.point_start.back());
   std::vector<std::uint32_t> representative(sequence.size());
-  std::vector<HashedPosition> hashed(implicit_start.back());
+  std::vector<HashedPosition> hashed(ranges.implicit_start.back());
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
   for (std::int64_t i = 0; i < atom_count; ++i) {
     const AtomPieces& p = pieces[i];
-    std::size_t next_implicit = implicit_start[i];
+    std::size_t next_implicit = ranges.implicit_start[i];
     for (std::size_t k = 0; k < p.points.size(); ++k) {
-      const auto position = static_cast<std::uint32_t>(point_start[i] + k);
+      const auto position = static_cast<std::uint32_t>(ranges.point_start[i] + k);
       sequence[position] = &p.points[k];
       representative[position] = position;
       // An atom's own corners are points of no other atom, unless two atoms have a vertex
-      // in common, which the merge by exact value below finds.
+      // in common, which the merge by exact value finds.
       if (!p.points[k].is_explicit()) hashed[next_implicit++] = {p.points[k].hash(), position};
     }
   }
@@ -867,51 +868,71 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
         break;
       }
   }
-  hashed = {};
-  sequence = {};
+  return representative;
+}
+
+// The points distinct by definition, in order of first appearance.
+struct DistinctPoints {
   std::vector<PointDefinition> points;
-  std::vector<Vec3> coordinates;
-  std::vector<std::uint32_t> point_of(representative.size());
+  std::vector<Vec3> coordinates;        // as written; NaN x: not yet known
+  std::vector<std::uint32_t> point_of;  // per position of the global sequence: its point
+};
+
+DistinctPoints distinct_points(std::span<const AtomPieces> pieces, std::span<const std::uint32_t> representative) {
+  DistinctPoints distinct;
+  distinct.point_of.resize(representative.size());
   for (std::size_t i = 0, s = 0; i < pieces.size(); ++i)
     for (std::size_t k = 0; k < pieces[i].points.size(); ++k, ++s) {
       if (representative[s] == s) {
-        point_of[s] = static_cast<std::uint32_t>(points.size());
-        points.push_back(pieces[i].points[k]);
-        coordinates.push_back(pieces[i].coordinates[k]);
+        distinct.point_of[s] = static_cast<std::uint32_t>(distinct.points.size());
+        distinct.points.push_back(pieces[i].points[k]);
+        distinct.coordinates.push_back(pieces[i].coordinates[k]);
       } else {
-        point_of[s] = point_of[representative[s]];
+        distinct.point_of[s] = distinct.point_of[representative[s]];
       }
     }
-  representative = {};
-  mesh.faces.resize(face_start.back());
-  mesh.face_tags.resize(face_start.back());
+  return distinct;
+}
+
+// The atoms' triangles into `mesh`, on the distinct points, each tagged with its atom.
+void join_faces(std::span<const AtomPieces> pieces, const SequenceRanges& ranges,
+                std::span<const std::uint32_t> point_of, int threads, Mesh& mesh) {
+  const auto atom_count = static_cast<std::int64_t>(pieces.size());
+  mesh.faces.resize(ranges.face_start.back());
+  mesh.face_tags.resize(ranges.face_start.back());
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
   for (std::int64_t i = 0; i < atom_count; ++i) {
     const auto& triangles = pieces[i].triangles;
     for (std::size_t j = 0; j < triangles.size(); ++j) {
-      Triangle& t = mesh.faces[face_start[i] + j];
-      for (int c = 0; c < 3; ++c) t[c] = point_of[point_start[i] + triangles[j][c]];
-      mesh.face_tags[face_start[i] + j] = static_cast<std::int32_t>(i);
+      Triangle& t = mesh.faces[ranges.face_start[i] + j];
+      for (int c = 0; c < 3; ++c) t[c] = point_of[ranges.point_start[i] + triangles[j][c]];
+      mesh.face_tags[ranges.face_start[i] + j] = static_cast<std::int32_t>(i);
     }
   }
-  point_of = {};
-  pieces = {};
+}
 
+// A written coordinate is within about 2 ulps of the exact one (the filter box's midpoint
+// when the box is that tight, the exact value truncated otherwise), so points equal by
+// exact value have written coordinates within this reach of each other.
+double rounding_reach(double c) {
+  return 8 * std::numeric_limits<double>::epsilon() * std::fabs(c) + 8 * std::numeric_limits<double>::denorm_min();
+}
+
+// Points equal by exact value but defined differently (degenerate contacts): the implicit
+// points are rebuilt and compared exactly only where their written coordinates' windows
+// overlap, in a sweep along x. Per point, a lower point equal to it (itself when none);
+// the chains end at the lowest. Constructs the coordinates not known yet.
+std::vector<std::uint32_t> merge_equal_values(const AtomPolyhedra& polyhedra, int threads, DistinctPoints& distinct) {
+  const std::vector<PointDefinition>& points = distinct.points;
+  std::vector<Vec3>& coordinates = distinct.coordinates;
   const auto point_count = static_cast<std::int64_t>(points.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (std::int64_t p = 0; p < point_count; ++p)
     if (std::isnan(coordinates[p].x)) coordinates[p] = construct(points[p], polyhedra).rounded();
-  // A written coordinate is within about 2 ulps of the exact one (the filter box's
-  // midpoint when the box is that tight, the exact value truncated otherwise), so points
-  // equal by exact value have written coordinates within these windows of each other; the
-  // implicit points are rebuilt and compared exactly only there.
-  auto reach = [](double c) {
-    return 8 * std::numeric_limits<double>::epsilon() * std::fabs(c) + 8 * std::numeric_limits<double>::denorm_min();
-  };
   auto windows_overlap = [&](std::uint32_t a, std::uint32_t b) {
     for (int axis = 0; axis < 3; ++axis) {
       const double x = coordinates[a][axis], y = coordinates[b][axis];
-      if (x + reach(x) < y - reach(y) || y + reach(y) < x - reach(x)) return false;
+      if (x + rounding_reach(x) < y - rounding_reach(y) || y + rounding_reach(y) < x - rounding_reach(x)) return false;
     }
     return true;
   };
@@ -920,13 +941,13 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t p = 0; p < point_count; ++p) {
     const double x = coordinates[p].x;
-    order[p] = {x - reach(x), static_cast<std::uint32_t>(p)};
+    order[p] = {x - rounding_reach(x), static_cast<std::uint32_t>(p)};
   }
   std::iota(same.begin(), same.end(), 0u);
   __gnu_parallel::sort(order.begin(), order.end());  // a total order: the same for any thread count
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::uint32_t a = order[k].second;
-    const double end = coordinates[a].x + reach(coordinates[a].x);
+    const double end = coordinates[a].x + rounding_reach(coordinates[a].x);
     for (std::size_t l = k + 1; l < order.size() && order[l].first <= end; ++l) {
       const std::uint32_t b = order[l].second, x = std::min(a, b), y = std::max(a, b);
       if (same[y] != y || !windows_overlap(a, b) ||
@@ -937,9 +958,17 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
       same[y] = root;
     }
   }
-  std::vector<std::uint32_t> vertex_of(points.size());
+  return same;
+}
+
+// The mesh's vertices: one per class of equal points, numbered in order of their lowest
+// point; the faces renumbered onto them. Per point, its vertex.
+std::vector<std::uint32_t> number_vertices(std::span<const std::uint32_t> same, std::span<const Vec3> coordinates,
+                                           int threads, Mesh& mesh) {
+  const auto point_count = static_cast<std::int64_t>(same.size());
+  std::vector<std::uint32_t> vertex_of(same.size());
   std::size_t vertex_count = 0;
-  for (std::uint32_t p = 0; p < points.size(); ++p) {
+  for (std::uint32_t p = 0; p < same.size(); ++p) {
     std::uint32_t root = p;
     while (same[root] != root) root = same[root];
     vertex_of[p] = root == p ? static_cast<std::uint32_t>(vertex_count++) : vertex_of[root];
@@ -952,20 +981,25 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t f = 0; f < face_count; ++f)
     for (Index& v : mesh.faces[f]) v = vertex_of[v];
-  result.stats.merged_points = points.size() - mesh.vertices.size();
-  // Rounding the points to doubles, after every decision, can make a tiny piece
-  // degenerate or fold it over its neighbour; the engine's repair fixes that by exact
-  // predicates on the rounded coordinates, without moving a vertex.
-  {
-    std::vector<std::uint8_t> rounded(mesh.vertices.size(), 0), operand(mesh.faces.size(), 0);
-    for (std::uint32_t p = 0; p < points.size(); ++p)
-      if (!points[p].is_explicit()) rounded[vertex_of[p]] = 1;
-    std::vector<std::uint32_t> atom_of(mesh.face_tags.begin(), mesh.face_tags.end());
-    boolean_engine::repair_rounding(mesh, operand, atom_of, rounded, {});
-    mesh.face_tags.assign(atom_of.begin(), atom_of.end());
-  }
-  // Closed: every directed edge (u, v) has its reverse, found among the few edges that
-  // leave v (edges bucketed by their first vertex).
+  return vertex_of;
+}
+
+// Rounding the points to doubles, after every decision, can make a tiny piece degenerate
+// or fold it over its neighbour; the engine's repair fixes that by exact predicates on the
+// rounded coordinates, without moving a vertex.
+void repair_rounded_points(std::span<const PointDefinition> points, std::span<const std::uint32_t> vertex_of,
+                           Mesh& mesh) {
+  std::vector<std::uint8_t> rounded(mesh.vertices.size(), 0), operand(mesh.faces.size(), 0);
+  for (std::uint32_t p = 0; p < points.size(); ++p)
+    if (!points[p].is_explicit()) rounded[vertex_of[p]] = 1;
+  std::vector<std::uint32_t> atom_of(mesh.face_tags.begin(), mesh.face_tags.end());
+  boolean_engine::repair_rounding(mesh, operand, atom_of, rounded, {});
+  mesh.face_tags.assign(atom_of.begin(), atom_of.end());
+}
+
+// Directed edges (u, v) without their reverse: 0 for a closed surface. The reverse is
+// found among the few edges that leave v (edges bucketed by their first vertex).
+std::size_t count_open_edges(const Mesh& mesh, int threads) {
   std::vector<std::uint32_t> first(mesh.vertices.size() + 1, 0);
   for (const Triangle& t : mesh.faces)
     for (const Index v : t) ++first[v + 1];
@@ -985,7 +1019,45 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
       if (std::find(to.begin() + first[v], to.begin() + first[v + 1], static_cast<Index>(u)) == to.begin() + first[v + 1])
         ++open_edges;
     }
-  result.stats.open_edges = open_edges;
+  return open_edges;
+}
+
+}  // namespace
+
+OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
+                             const std::function<void(std::size_t, std::size_t)>& progress,
+                             const std::function<void(const SurfaceSizeEstimate&)>& check_size,
+                             std::uint64_t estimate_size_above) {
+  OnePassResult result;
+  auto start = Clock::now();
+  const AtomPolyhedra polyhedra(atoms, options);
+  const NeighbourList neighbours = find_neighbours(polyhedra);
+  if (check_size) {
+    std::uint64_t sphere_faces = 0;
+    for (std::size_t i = 0; i < polyhedra.size(); ++i) sphere_faces += polyhedra.shape(i).unit.faces.size();
+    if (sphere_faces > estimate_size_above) check_size(estimate_union_size(polyhedra, neighbours, threads));
+  }
+  std::vector<AtomPieces> pieces = trim_atoms(polyhedra, neighbours, threads, progress);
+  result.stats.seconds_trim = seconds_since(start);
+
+  // Join: atoms in index order, points merged by definition, then points equal by exact
+  // value but defined differently (degenerate contacts) merged too: only points whose
+  // filter boxes overlap are compared exactly. The steps run in parallel where they are
+  // not linear scans, and number points as a serial scan would (in order of first
+  // appearance), so the mesh is the same for any thread count. Buffers go as soon as
+  // their step is done, to keep the peak memory down.
+  start = Clock::now();
+  Mesh& mesh = result.mesh;
+  const SequenceRanges ranges = sequence_ranges(pieces, result.stats);
+  DistinctPoints distinct = distinct_points(pieces, representatives_by_definition(pieces, ranges, threads));
+  join_faces(pieces, ranges, distinct.point_of, threads, mesh);
+  distinct.point_of = {};
+  pieces = {};
+  const std::vector<std::uint32_t> same = merge_equal_values(polyhedra, threads, distinct);
+  const std::vector<std::uint32_t> vertex_of = number_vertices(same, distinct.coordinates, threads, mesh);
+  result.stats.merged_points = distinct.points.size() - mesh.vertices.size();
+  repair_rounded_points(distinct.points, vertex_of, mesh);
+  result.stats.open_edges = count_open_edges(mesh, threads);
   result.stats.seconds_join = seconds_since(start);
   result.stats.atoms = atoms.size();
   result.stats.duplicate_atoms = polyhedra.duplicates();
