@@ -132,7 +132,9 @@ class ArrayFailure {
  public:
   ArrayFailure(const std::filesystem::path& file, const XmlElement& array)
       : file_(file), line_(array.line), name_(shown(array.attribute("Name").value_or(""))) {}
-  [[noreturn]] void operator()(const std::string& problem) const { fail(file_, line_, "DataArray " + name_ + ": " + problem); }
+  [[noreturn]] void operator()(const std::string& problem) const {
+    fail(file_, line_, "DataArray " + name_ + ": " + problem);
+  }
 
  private:
   const std::filesystem::path& file_;
@@ -218,7 +220,12 @@ class BinaryArrayReader {
  public:
   BinaryArrayReader(ByteCursor& cursor, const VtkXmlEncoding& encoding, ValueType type, std::string_view type_name,
                     std::optional<std::uint64_t> count, const ArrayFailure& fail_here)
-      : cursor_(cursor), encoding_(encoding), type_(type), type_name_(type_name), count_(count), fail_here_(fail_here) {}
+      : cursor_(cursor),
+        encoding_(encoding),
+        type_(type),
+        type_name_(type_name),
+        count_(count),
+        fail_here_(fail_here) {}
 
   std::string data() { return encoding_.zlib ? inflated_blocks() : raw_bytes(); }
 
@@ -233,7 +240,8 @@ class BinaryArrayReader {
   // Checked before any data is read: the declared size must be what the caller expects.
   void check_size(std::uint64_t bytes) const {
     if (bytes % type_.size != 0)
-      fail_here_("holds " + std::to_string(bytes) + " bytes, not a whole number of " + std::string(type_name_) + " values");
+      fail_here_("holds " + std::to_string(bytes) + " bytes, not a whole number of " + std::string(type_name_) +
+                 " values");
     check_value_count(count_, bytes / type_.size, fail_here_);
   }
 
@@ -296,7 +304,8 @@ class BinaryArrayReader {
 
 // The values of a binary array from its decoded bytes, in the file's byte order.
 template <class Value>
-std::vector<Value> binary_values(std::string_view data, ValueType type, bool big_endian, const ArrayFailure& fail_here) {
+std::vector<Value> binary_values(std::string_view data, ValueType type, bool big_endian,
+                                 const ArrayFailure& fail_here) {
   std::vector<Value> out;
   const std::size_t n = data.size() / type.size;
   out.reserve(n);
