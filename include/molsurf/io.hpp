@@ -39,6 +39,7 @@ struct MeshWriteOptions {
   int msms_decimals = 3;
   double probe_radius = 1.4;   // recorded in MSMS headers
   double density = 2.0;        // recorded in MSMS headers
+  int threads = 0;             // for the parallel parts (.vtp's compression); 0: OpenMP's default
 };
 
 // For MSMS the path may name either file of the pair (or end in .vert); both are written,

@@ -11,6 +11,7 @@ namespace molsurf {
 struct MeshCheckOptions {
   bool self_intersections = true;  // the expensive part: BVH + exact triangle tests
   std::size_t max_examples = 5;    // face (or vertex) indices kept per defect
+  int threads = 0;                 // 0: OpenMP's default
 };
 
 struct MeshCheck {

@@ -1,4 +1,3 @@
-#include <omp.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -7,6 +6,7 @@
 #include <span>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "cli/commands.hpp"
 #include "molsurf/compute_surface.hpp"
@@ -236,11 +236,12 @@ ReadOptions read_options(const SurfaceCommand& command) {
   return options;
 }
 
-// --threads for every parallel loop, the engine's too.
-void use_threads(const SurfaceCommand& command) {
-  if (command.threads > 0) omp_set_num_threads(command.threads);
-  if (command.threads > omp_get_num_procs() && !command.quiet)
-    std::cerr << "molsurf: note: --threads " << command.threads << " is more than the " << omp_get_num_procs()
+// --threads goes to each library call that runs in parallel (the surface, the check, the
+// writing), which sets it for its own duration; here it is only compared with the cores.
+void note_threads(const SurfaceCommand& command) {
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (cores > 0 && command.threads > static_cast<int>(cores) && !command.quiet)
+    std::cerr << "molsurf: note: --threads " << command.threads << " is more than the " << cores
               << " cores available: the result is the same, but not faster\n";
 }
 
@@ -281,6 +282,7 @@ MeshWriteOptions surface_write_options(const SurfaceCommand& command, std::span<
   options.probe_radius = command.spheres.probe;
   options.density = command.spheres.density;
   options.ascii = command.ascii;
+  options.threads = command.threads;
   options.msms_header = !command.no_header;
   options.msms_atom_names = !command.no_header;
   options.surface_description =
@@ -363,7 +365,7 @@ int SurfaceCommand::run() const {
   std::ostream& text = report_to_stdout ? std::cerr : std::cout;
 
   const ReadOptions options = read_options(*this);
-  use_threads(*this);
+  note_threads(*this);
   SurfaceReport report;
   const auto read_start = std::chrono::steady_clock::now();
   const Structure s = read_structure(structure, options);
@@ -384,6 +386,7 @@ int SurfaceCommand::run() const {
   const MeshWriteOptions write_options = surface_write_options(*this, s.atoms);
   MeshCheckOptions check_options;
   check_options.self_intersections = !skip_check;
+  check_options.threads = threads;
   // Lossy formats (.vert, .stl): the surface is checked again as the file will hold it.
   auto clock = std::chrono::steady_clock::now();
   const WrittenCheck written = check_as_written(out, surface, computed.check, write_options, check_options,

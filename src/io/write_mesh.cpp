@@ -2,6 +2,7 @@
 // together (AtomicFileSet). Also what each format does to coordinates (mesh_as_written).
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
+#include "common/thread_count_scope.hpp"
 
 namespace molsurf {
 
@@ -10,6 +11,7 @@ namespace mesh_io {
 void write_into(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const MeshFormat format = mesh_format_from_path(file);
   check_writable(file, mesh, options);
+  const ThreadCountScope thread_count(options.threads);
   switch (format) {
     case MeshFormat::vtp: return write_vtp(files, file, mesh, options);
     case MeshFormat::vtk: return write_vtk(files, file, mesh, options);

@@ -25,6 +25,7 @@
 //    examined: exact predicates cannot take NaN or infinity. Non-finite area or volume
 //    (finite coordinates whose products overflow) is a defect too.
 #include "molsurf/mesh_check.hpp"
+#include "common/thread_count_scope.hpp"
 
 #include <parallel/algorithm>
 
@@ -449,6 +450,7 @@ std::vector<std::string> MeshCheck::defects() const {
 
 MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
   require_valid_indices(mesh);
+  const ThreadCountScope thread_count(options.threads);
   MeshCheck result;
   result.vertices = mesh.vertices.size();
   result.faces = mesh.faces.size();
