@@ -156,22 +156,10 @@ class Repairer {
   const std::vector<std::uint32_t>* find_faces(Index v) const {
     return slot_of_[v] == kNoSlot ? nullptr : &slots_[slot_of_[v]];
   }
-  // The faces with edge ab, in the order they were indexed, a face once per such edge it
-  // has (a face with a repeated corner can have two).
+  // The indexed faces on edge ab, in the order they were indexed.
   std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const {
-    std::vector<std::uint32_t> on;
     const auto* around = find_faces(a);
-    if (around == nullptr) return on;
-    for (std::size_t k = 0; k < around->size(); ++k) {
-      const std::uint32_t g = (*around)[k];
-      if (std::find(around->begin(), around->begin() + static_cast<std::ptrdiff_t>(k), g) !=
-          around->begin() + static_cast<std::ptrdiff_t>(k))
-        continue;  // listed again for a repeated corner
-      const Triangle& t = m_.faces[g];
-      for (int i = 0; i < 3; ++i)
-        if ((t[i] == a && t[(i + 1) % 3] == b) || (t[i] == b && t[(i + 1) % 3] == a)) on.push_back(g);
-    }
-    return on;
+    return around == nullptr ? std::vector<std::uint32_t>{} : molsurf::faces_on_edge(m_, *around, a, b);
   }
 
   std::uint32_t add_face(const Triangle& t, std::uint32_t like) {
@@ -202,24 +190,8 @@ class Repairer {
     return false;
   }
 
-  // The common neighbours of u and v beyond the faces on edge uv: what makes the edge's
-  // collapse fail the link condition.
   std::vector<Index> blocking_vertices(Index u, Index v) {
-    const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
-    std::vector<Index> opposite, around_u, blocking;
-    for (std::uint32_t g : on_edge)
-      for (Index w : m_.faces[g])
-        if (w != u && w != v) opposite.push_back(w);
-    for (std::uint32_t g : faces_of(u))
-      for (Index w : m_.faces[g])
-        if (w != u && w != v) around_u.push_back(w);
-    for (std::uint32_t g : faces_of(v))
-      for (Index w : m_.faces[g])
-        if (w != u && w != v && std::find(around_u.begin(), around_u.end(), w) != around_u.end() &&
-            std::find(opposite.begin(), opposite.end(), w) == opposite.end() &&
-            std::find(blocking.begin(), blocking.end(), w) == blocking.end())
-          blocking.push_back(w);
-    return blocking;
+    return molsurf::blocking_vertices(m_, faces_of(u), faces_of(v), u, v);
   }
 
   // A zero-length edge uv whose collapse fails the link condition only because u and v

@@ -46,6 +46,45 @@ inline std::vector<Index> vertex_neighbours(const Mesh& m, std::span<const std::
   return n;
 }
 
+// The faces on edge ab among `faces_of_a` (the faces around a), in their order; a face
+// once per such edge it has (a face with a repeated corner, listed twice around a, can
+// have two).
+inline std::vector<std::uint32_t> faces_on_edge(const Mesh& m, std::span<const std::uint32_t> faces_of_a, Index a,
+                                                Index b) {
+  std::vector<std::uint32_t> on;
+  for (std::size_t k = 0; k < faces_of_a.size(); ++k) {
+    const std::uint32_t g = faces_of_a[k];
+    if (std::find(faces_of_a.begin(), faces_of_a.begin() + static_cast<std::ptrdiff_t>(k), g) !=
+        faces_of_a.begin() + static_cast<std::ptrdiff_t>(k))
+      continue;  // listed again for a repeated corner
+    const Triangle& t = m.faces[g];
+    for (int i = 0; i < 3; ++i)
+      if ((t[i] == a && t[(i + 1) % 3] == b) || (t[i] == b && t[(i + 1) % 3] == a)) on.push_back(g);
+  }
+  return on;
+}
+
+// The common neighbours of a and b beyond the faces on edge ab (sorted): what makes the
+// edge's collapse fail the link condition. Empty unless the edge has two faces (no
+// collapse is possible then anyway).
+inline std::vector<Index> blocking_vertices(const Mesh& m, std::span<const std::uint32_t> faces_of_a,
+                                            std::span<const std::uint32_t> faces_of_b, Index a, Index b) {
+  const std::vector<std::uint32_t> on_edge = faces_on_edge(m, faces_of_a, a, b);
+  if (on_edge.size() != 2) return {};
+  std::vector<Index> opposite;
+  for (std::uint32_t g : on_edge)
+    for (Index w : m.faces[g])
+      if (w != a && w != b) opposite.push_back(w);
+  const std::vector<Index> around_a = vertex_neighbours(m, faces_of_a, a);
+  const std::vector<Index> around_b = vertex_neighbours(m, faces_of_b, b);
+  std::vector<Index> blocking;
+  for (Index w : around_a)
+    if (w != b && std::binary_search(around_b.begin(), around_b.end(), w) &&
+        std::find(opposite.begin(), opposite.end(), w) == opposite.end())
+      blocking.push_back(w);
+  return blocking;
+}
+
 // The link condition for collapsing edge uv: the vertices joined to both u and v are
 // exactly the opposite corners of the faces on the edge, so the collapse keeps a
 // 2-manifold.

@@ -208,14 +208,7 @@ class Cleaner {
   }
 
   // The faces on edge ab (a closed 2-manifold has exactly two).
-  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const {
-    std::vector<std::uint32_t> on;
-    for (std::uint32_t g : faces_of_[a]) {
-      const Triangle& t = m_.faces[g];
-      if (t[0] == b || t[1] == b || t[2] == b) on.push_back(g);
-    }
-    return on;
-  }
+  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const { return molsurf::faces_on_edge(m_, faces_of_[a], a, b); }
 
   // Cheap checks and measures, on doubles: no face may become degenerate (exact) or turn
   // by more than 60 degrees (a selection: far from the exact question "does it turn
@@ -683,23 +676,8 @@ class Cleaner {
     return false;
   }
 
-  // The common neighbours of a and b beyond the faces on edge ab: what makes the edge's
-  // collapse fail the link condition (empty unless the edge has two faces).
   std::vector<Index> blocking_vertices(Index a, Index b) const {
-    const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
-    if (on_edge.size() != 2) return {};
-    std::vector<Index> opposite;
-    for (std::uint32_t g : on_edge)
-      for (Index w : m_.faces[g])
-        if (w != a && w != b) opposite.push_back(w);
-    const std::vector<Index> around_a = vertex_neighbours(m_, faces_of_[a], a);
-    const std::vector<Index> around_b = vertex_neighbours(m_, faces_of_[b], b);
-    std::vector<Index> blocking;
-    for (Index w : around_a)
-      if (std::binary_search(around_b.begin(), around_b.end(), w) &&
-          std::find(opposite.begin(), opposite.end(), w) == opposite.end())
-        blocking.push_back(w);
-    return blocking;
+    return molsurf::blocking_vertices(m_, faces_of_[a], faces_of_[b], a, b);
   }
 
   // Removal of a vertex with three faces: they become the one face on its three neighbours.
