@@ -9,6 +9,7 @@
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/topology.hpp"
+#include "mesh/vertex_face_index.hpp"
 
 namespace molsurf::boolean_engine {
 
@@ -100,7 +101,6 @@ class Repairer {
       const Triangle& t = m.faces[f];
       if (mark[t[0]] || mark[t[1]] || mark[t[2]]) indexed_.push_back(f);
     }
-    slot_of_.assign(m.vertices.size(), kNoSlot);
     for (std::uint32_t f : indexed_) index_face(f);
   }
 
@@ -138,29 +138,11 @@ class Repairer {
   }
 
  private:
-  void index_face(std::uint32_t f) {
-    const Triangle& t = m_.faces[f];
-    for (Index v : t) faces_of(v).push_back(f);
-  }
-  void unindex_face(std::uint32_t f) {
-    const Triangle& t = m_.faces[f];
-    for (Index v : t) std::erase(faces_of(v), f);
-  }
-  std::vector<std::uint32_t>& faces_of(Index v) {
-    if (slot_of_[v] == kNoSlot) {
-      slot_of_[v] = static_cast<std::uint32_t>(slots_.size());
-      slots_.emplace_back();
-    }
-    return slots_[slot_of_[v]];
-  }
-  const std::vector<std::uint32_t>* find_faces(Index v) const {
-    return slot_of_[v] == kNoSlot ? nullptr : &slots_[slot_of_[v]];
-  }
+  void index_face(std::uint32_t f) { faces_of_.add(f, m_.faces[f]); }
+  void unindex_face(std::uint32_t f) { faces_of_.remove(f, m_.faces[f]); }
+  std::span<const std::uint32_t> faces_of(Index v) const { return faces_of_.of(v); }
   // The indexed faces on edge ab, in the order they were indexed.
-  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const {
-    const auto* around = find_faces(a);
-    return around == nullptr ? std::vector<std::uint32_t>{} : molsurf::faces_on_edge(m_, *around, a, b);
-  }
+  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const { return molsurf::faces_on_edge(m_, faces_of(a), a, b); }
 
   std::uint32_t add_face(const Triangle& t, std::uint32_t like) {
     const auto f = static_cast<std::uint32_t>(m_.faces.size());
@@ -262,7 +244,8 @@ class Repairer {
     const bool sliver = may_turn_over(m_, t);
     std::vector<std::uint32_t> ring;
     auto faces_around = [&](Index v, std::vector<std::uint32_t>& out) {
-      if (const auto* around = find_faces(v)) out.insert(out.end(), around->begin(), around->end());
+      const auto around = faces_of(v);
+      out.insert(out.end(), around.begin(), around.end());
     };
     for (Index v : t) faces_around(v, ring);
     if (sliver) {
@@ -345,8 +328,7 @@ class Repairer {
               (axis == 0 ? moved.x : axis == 1 ? moved.y : moved.z) = std::nextafter(original[axis], step[axis] * inf);
           m_.vertices[v] = moved;
           bool flat = false;
-          if (const auto* around = find_faces(v))
-            for (std::uint32_t g : *around) flat |= alive_[g] && degenerate(m_, m_.faces[g]);
+          for (std::uint32_t g : faces_of(v)) flat |= alive_[g] && degenerate(m_, m_.faces[g]);
           if (flat) continue;
           if (const std::size_t count = crossings_around({v}); count < best) {
             best = count;
@@ -404,10 +386,11 @@ class Repairer {
   std::size_t crossings_around(std::initializer_list<Index> centres) const {
     std::vector<std::uint32_t> faces;
     for (Index c : centres)
-      if (const auto* around_c = find_faces(c))
-        for (std::uint32_t g : *around_c)
-          for (Index w : m_.faces[g])
-            if (const auto* around_w = find_faces(w)) faces.insert(faces.end(), around_w->begin(), around_w->end());
+      for (std::uint32_t g : faces_of(c))
+        for (Index w : m_.faces[g]) {
+          const auto around_w = faces_of(w);
+          faces.insert(faces.end(), around_w.begin(), around_w.end());
+        }
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     std::size_t count = 0;
@@ -461,7 +444,7 @@ class Repairer {
     const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
     if (!link_condition(m_, faces_of(u), faces_of(v), on_edge, u, v)) return false;
     for (std::uint32_t g : on_edge) kill(g);
-    const std::vector<std::uint32_t> moving = faces_of(v);
+    const std::vector<std::uint32_t> moving(faces_of(v).begin(), faces_of(v).end());
     for (std::uint32_t g : moving) {
       unindex_face(g);
       for (Index& w : m_.faces[g])
@@ -519,11 +502,7 @@ class Repairer {
   std::vector<std::uint8_t> alive_;
   std::vector<std::uint32_t> indexed_;
   std::uint32_t first_added_ = static_cast<std::uint32_t>(m_.faces.size());
-  // The indexed faces around each vertex that has any, in the order they were indexed (a
-  // face with a repeated corner is listed once per occurrence): slot_of_[v] is v's row.
-  static constexpr std::uint32_t kNoSlot = ~0u;
-  std::vector<std::uint32_t> slot_of_;
-  std::vector<std::vector<std::uint32_t>> slots_;
+  VertexFaceIndex faces_of_{m_.vertices.size()};  // the indexed faces around each vertex
 };
 
 }  // namespace

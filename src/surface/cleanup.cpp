@@ -16,6 +16,7 @@
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/topology.hpp"
+#include "mesh/vertex_face_index.hpp"
 #include "surface/cleanup_face_grid.hpp"
 
 namespace molsurf {
@@ -55,10 +56,11 @@ struct Edit {
 // (see Sweep), so nothing here is locked.
 struct CleanupShared {
   // `area`: the mesh's surface area, which the caller has measured.
-  CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area) : m(mesh), options(opts), alive(mesh.faces.size(), 1) {
-    faces_of.resize(m.vertices.size());
-    for (std::uint32_t f = 0; f < m.faces.size(); ++f)
-      for (Index v : m.faces[f]) faces_of[v].push_back(f);
+  CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area)
+      : m(mesh), options(opts), alive(mesh.faces.size(), 1), faces_of(mesh.vertices.size()) {
+    // Every vertex with a face gets its list here: edits only regroup the faces of vertices
+    // that have some, so the workers never give a vertex its first face.
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f) faces_of.add(f, m.faces[f]);
     double total = 0;
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
       const Triangle& t = m.faces[f];
@@ -90,7 +92,7 @@ struct CleanupShared {
   Mesh& m;
   const CleanupOptions& options;
   std::vector<std::uint8_t> alive;
-  std::vector<std::vector<std::uint32_t>> faces_of;
+  VertexFaceIndex faces_of;
   std::unique_ptr<CleanupFaceGrid> grid;
   std::vector<double> angle, face_area;  // per face; NaN: not measured since it changed
   double area_budget = 0, area_drift = 0;
@@ -201,14 +203,14 @@ class Cleaner {
   // The tags of the faces around v, sorted and unique (one tag: not on a seam).
   std::vector<std::int32_t> tags_of(Index v) const {
     std::vector<std::int32_t> tags;
-    for (std::uint32_t f : faces_of_[v]) tags.push_back(m_.tag(f));
+    for (std::uint32_t f : faces_of_.of(v)) tags.push_back(m_.tag(f));
     std::sort(tags.begin(), tags.end());
     tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
     return tags;
   }
 
   // The faces on edge ab (a closed 2-manifold has exactly two).
-  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const { return molsurf::faces_on_edge(m_, faces_of_[a], a, b); }
+  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const { return molsurf::faces_on_edge(m_, faces_of_.of(a), a, b); }
 
   // Cheap checks and measures, on doubles: no face may become degenerate (exact) or turn
   // by more than 60 degrees (a selection: far from the exact question "does it turn
@@ -317,7 +319,7 @@ class Cleaner {
               found = true;
             }
         }
-        for (std::uint32_t g : faces_of_[a]) {
+        for (std::uint32_t g : faces_of_.of(a)) {
           if (found) break;
           if (in_edit(g)) continue;
           const Triangle& u = m_.faces[g];
@@ -425,7 +427,7 @@ class Cleaner {
     for (const auto* list : {&e.removed, &e.changed})
       for (std::uint32_t f : *list) {
         grid_.erase(f);
-        for (Index w : m_.faces[f]) std::erase(faces_of_[w], f);
+        faces_of_.remove(f, m_.faces[f]);
       }
     for (std::uint32_t f : e.removed) alive_[f] = 0;
     if (e.moved != kNoVertex) m_.vertices[e.moved] = e.target;
@@ -434,7 +436,7 @@ class Cleaner {
       m_.faces[f] = e.triangles[k];
       forget(f);
       grid_.insert(f);
-      for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
+      faces_of_.add(f, m_.faces[f]);
     }
     area_drift_ += e.area_change;
     volume_change_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] += e.volume_change;
@@ -451,7 +453,7 @@ class Cleaner {
     const Edit& e = step.edit;
     for (std::uint32_t f : e.changed) {
       grid_.erase(f);
-      for (Index w : m_.faces[f]) std::erase(faces_of_[w], f);
+      faces_of_.remove(f, m_.faces[f]);
     }
     if (e.moved != kNoVertex) m_.vertices[e.moved] = step.old_position;
     for (std::size_t k = 0; k < e.changed.size(); ++k) m_.faces[e.changed[k]] = step.old_triangles[k];
@@ -460,7 +462,7 @@ class Cleaner {
         alive_[f] = 1;
         forget(f);
         grid_.insert(f);
-        for (Index w : m_.faces[f]) faces_of_[w].push_back(f);
+        faces_of_.add(f, m_.faces[f]);
       }
     area_drift_ -= e.area_change;
     volume_change_[component_of_[e.changed.empty() ? e.removed.front() : e.changed.front()]] -= e.volume_change;
@@ -487,7 +489,7 @@ class Cleaner {
     if (!(length[order[0]] <= tiny)) return false;
     std::vector<Index> cluster{t[order[0]]};
     for (std::size_t k = 0; k < cluster.size() && cluster.size() <= kMaxCluster; ++k)
-      for (Index w : vertex_neighbours(m_, faces_of_[cluster[k]], cluster[k]))
+      for (Index w : vertex_neighbours(m_, faces_of_.of(cluster[k]), cluster[k]))
         if (std::find(cluster.begin(), cluster.end(), w) == cluster.end() &&
             norm(m_.vertices[w] - m_.vertices[cluster[k]]) <= tiny)
           cluster.push_back(w);
@@ -514,7 +516,7 @@ class Cleaner {
       progress = false;
       for (auto it = rest.begin(); it != rest.end(); ++it) {
         const std::vector<std::uint32_t> on_edge = faces_on_edge(keep, *it);
-        if (on_edge.size() != 2 || !link_condition(m_, faces_of_[keep], faces_of_[*it], on_edge, keep, *it)) continue;
+        if (on_edge.size() != 2 || !link_condition(m_, faces_of_.of(keep), faces_of_.of(*it), on_edge, keep, *it)) continue;
         Edit e = collapse(keep, *it, on_edge, m_.vertices[keep]);
         if (!evaluate(e, false) || !fits(e)) continue;
         commit(e);
@@ -560,8 +562,8 @@ class Cleaner {
       for (std::uint32_t g : faces_on_edge(a, b))
         for (Index w : m_.faces[g])
           if (w != a && w != b) opposite.push_back(w);
-      const std::vector<Index> around_a = vertex_neighbours(m_, faces_of_[a], a);
-      const std::vector<Index> around_b = vertex_neighbours(m_, faces_of_[b], b);
+      const std::vector<Index> around_a = vertex_neighbours(m_, faces_of_.of(a), a);
+      const std::vector<Index> around_b = vertex_neighbours(m_, faces_of_.of(b), b);
       for (Index w : around_a) {
         if (std::find(opposite.begin(), opposite.end(), w) != opposite.end() ||
             !std::binary_search(around_b.begin(), around_b.end(), w))
@@ -581,7 +583,7 @@ class Cleaner {
     for (int k = 0; k < 3; ++k) {
       centre += m_.vertices[loop[k]] / 3.0;
       size = std::max(size, norm(m_.vertices[loop[(k + 1) % 3]] - m_.vertices[loop[k]]));
-      for (Index w : vertex_neighbours(m_, faces_of_[loop[k]], loop[k]))
+      for (Index w : vertex_neighbours(m_, faces_of_.of(loop[k]), loop[k]))
         if (std::find(loop.begin(), loop.end(), w) == loop.end()) {
           leaving += norm(m_.vertices[w] - m_.vertices[loop[k]]);
           ++leaving_count;
@@ -638,9 +640,9 @@ class Cleaner {
         std::vector<Edit> steps;
         for (std::uint32_t g : faces_on_edge(a, b))
           for (Index o : m_.faces[g])
-            if (o != a && o != b && faces_of_[o].size() == 3) steps.push_back(remove_valence_three(o));
+            if (o != a && o != b && faces_of_.of(o).size() == 3) steps.push_back(remove_valence_three(o));
         for (Index w : blocking) {
-          if (faces_of_[w].size() == 3) steps.push_back(remove_valence_three(w));
+          if (faces_of_.of(w).size() == 3) steps.push_back(remove_valence_three(w));
           for (Index end : {a, b})
             if (const std::vector<std::uint32_t> on = faces_on_edge(end, w); on.size() == 2)
               steps.push_back(flip(on[0], end, w));
@@ -655,7 +657,7 @@ class Cleaner {
       if (ok) {
         ok = false;
         const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
-        if (on_edge.size() == 2 && link_condition(m_, faces_of_[a], faces_of_[b], on_edge, a, b)) {
+        if (on_edge.size() == 2 && link_condition(m_, faces_of_.of(a), faces_of_.of(b), on_edge, a, b)) {
           const Vec3 pa = m_.vertices[a], pb = m_.vertices[b];
           std::vector<Edit> collapses;
           for (auto [u, v, target] : {std::tuple{a, b, pa}, std::tuple{b, a, pb}, std::tuple{a, b, 0.5 * (pa + pb)}}) {
@@ -677,14 +679,14 @@ class Cleaner {
   }
 
   std::vector<Index> blocking_vertices(Index a, Index b) const {
-    return molsurf::blocking_vertices(m_, faces_of_[a], faces_of_[b], a, b);
+    return molsurf::blocking_vertices(m_, faces_of_.of(a), faces_of_.of(b), a, b);
   }
 
   // Removal of a vertex with three faces: they become the one face on its three neighbours.
   Edit remove_valence_three(Index w) const {
     Edit e;
     e.kind = Edit::Kind::collapse;
-    const std::vector<std::uint32_t>& fan = faces_of_[w];
+    const std::span<const std::uint32_t> fan = faces_of_.of(w);
     Triangle first = m_.faces[fan[0]];
     while (first[0] != w) first = {first[1], first[2], first[0]};
     const Index p = first[1], q = first[2];
@@ -722,7 +724,7 @@ class Cleaner {
     Edit e;
     e.kind = Edit::Kind::collapse;
     e.removed = on_edge;
-    for (std::uint32_t g : faces_of_[v]) {
+    for (std::uint32_t g : faces_of_.of(v)) {
       if (g == on_edge[0] || g == on_edge[1]) continue;
       Triangle t = m_.faces[g];
       for (Index& w : t)
@@ -730,7 +732,7 @@ class Cleaner {
       add_change(e, g, t);
     }
     if (!(target == m_.vertices[u])) {
-      for (std::uint32_t g : faces_of_[u])
+      for (std::uint32_t g : faces_of_.of(u))
         if (g != on_edge[0] && g != on_edge[1]) add_change(e, g, m_.faces[g]);
       e.moved = u;
       e.target = target;
@@ -752,7 +754,7 @@ class Cleaner {
       if (w != a && w != b) c = w;
     for (Index w : tg)
       if (w != a && w != b) d = w;
-    for (std::uint32_t h : faces_of_[c])  // the new edge cd must not exist yet
+    for (std::uint32_t h : faces_of_.of(c))  // the new edge cd must not exist yet
       for (Index w : m_.faces[h])
         if (w == d) return e;
     // Nearly coplanar faces only; across a seam (different tags) nearer still. A cap on
@@ -780,7 +782,7 @@ class Cleaner {
   Edit move(Index v, const Vec3& target) const {
     Edit e;
     e.kind = Edit::Kind::move;
-    for (std::uint32_t g : faces_of_[v]) add_change(e, g, m_.faces[g]);
+    for (std::uint32_t g : faces_of_.of(v)) add_change(e, g, m_.faces[g]);
     e.moved = v;
     e.target = target;
     return e;
@@ -795,14 +797,14 @@ class Cleaner {
     Vec3 step;
     if (tags.size() == 1) {
       Vec3 n, centre;
-      const std::vector<Index> ring = vertex_neighbours(m_, faces_of_[v], v);
-      for (std::uint32_t g : faces_of_[v]) n += normal(m_.faces[g]);
+      const std::vector<Index> ring = vertex_neighbours(m_, faces_of_.of(v), v);
+      for (std::uint32_t g : faces_of_.of(v)) n += normal(m_.faces[g]);
       for (Index w : ring) centre += m_.vertices[w];
       centre = centre / static_cast<double>(ring.size());
       const double nn = dot(n, n);
       if (!(nn > 0)) return;
       // Only where the surface is smooth: a corner or crease (of an untagged mesh) stays.
-      for (std::uint32_t g : faces_of_[v]) {
+      for (std::uint32_t g : faces_of_.of(v)) {
         const Vec3 ng = normal(m_.faces[g]);
         if (!(dot(ng, n) > kSmoothCos * norm(ng) * std::sqrt(nn))) return;
       }
@@ -811,7 +813,7 @@ class Cleaner {
     } else {
       // The two neighbours along the seam: edges whose two faces have different tags.
       std::vector<Index> along;
-      for (Index w : vertex_neighbours(m_, faces_of_[v], v)) {
+      for (Index w : vertex_neighbours(m_, faces_of_.of(v), v)) {
         const std::vector<std::uint32_t> on = faces_on_edge(v, w);
         if (on.size() == 2 && m_.tag(on[0]) != m_.tag(on[1])) along.push_back(w);
       }
@@ -842,7 +844,7 @@ class Cleaner {
       if (i != longest && length[i] <= 0.6 * length[longest]) {
         const Index a = t[i], b = t[(i + 1) % 3];
         const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
-        if (on_edge.size() != 2 || !link_condition(m_, faces_of_[a], faces_of_[b], on_edge, a, b)) continue;
+        if (on_edge.size() != 2 || !link_condition(m_, faces_of_.of(a), faces_of_.of(b), on_edge, a, b)) continue;
         const std::vector<std::int32_t> tags_a = tags_of(a), tags_b = tags_of(b);
         const Vec3 &pa = m_.vertices[a], &pb = m_.vertices[b];
         auto add = [&](Index u, Index v, const Vec3& target, int rank) {
@@ -933,7 +935,7 @@ class Cleaner {
         const auto [a, b] = edge;
         if (!(norm(m_.vertices[b] - m_.vertices[a]) < floor)) continue;  // an earlier collapse moved it
         const std::vector<std::uint32_t> on_edge = faces_on_edge(a, b);
-        if (on_edge.size() != 2 || !link_condition(m_, faces_of_[a], faces_of_[b], on_edge, a, b)) continue;
+        if (on_edge.size() != 2 || !link_condition(m_, faces_of_.of(a), faces_of_.of(b), on_edge, a, b)) continue;
         const std::vector<std::int32_t> tags_a = tags_of(a), tags_b = tags_of(b);
         auto within = [](const std::vector<std::int32_t>& x, const std::vector<std::int32_t>& y) {
           return std::includes(y.begin(), y.end(), x.begin(), x.end());
@@ -962,7 +964,7 @@ class Cleaner {
   Mesh& m_;
   const CleanupOptions& options_;
   std::vector<std::uint8_t>& alive_;
-  std::vector<std::vector<std::uint32_t>>& faces_of_;
+  VertexFaceIndex& faces_of_;
   CleanupFaceGrid& grid_;
   std::vector<double>& angle_;
   std::vector<double>& area_;
