@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "atom_fixtures.hpp"
+#include "degenerate_placements.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/compute_surface.hpp"
@@ -102,6 +103,34 @@ TEST(ComputeSurface, FailedCheckReturnsNoSurface) {
     const std::string message = failed.what();
     EXPECT_NE(message.find("failed its check"), std::string::npos) << message;
     EXPECT_NE(message.find("degenerate"), std::string::npos) << message;
+  }
+}
+
+// Where the pairwise union stops (the icosahedral shells whose merges touch themselves,
+// docs/boolean.md), compute_surface says so as a molsurf::Error that names the method and
+// the way out, never as an internal std::logic_error. Whatever a later engine does, a valid
+// surface or that error are the only outcomes.
+TEST(ComputeSurface, APairwiseStopIsAPlainErrorNamingTheDefaultMethod) {
+  for (const std::uint32_t seed : {1003u, 1035u, 1059u, 1082u, 1084u, 1086u, 1091u, 1099u}) {
+    const auto placement = testing::degenerate_placement(testing::PlacementFamily::icosahedral_shell, seed);
+    for (const double probe : {0.7, 1.4}) {
+      ComputeSurfaceOptions o;
+      o.spheres.frequency = 1;
+      o.spheres.probe = probe;
+      o.method = SurfaceMethod::pairwise;
+      try {
+        const ComputedSurface r = compute_surface(placement.atoms, o);
+        EXPECT_TRUE(r.check.valid()) << "seed " << seed;
+      } catch (const SurfaceCheckFailed&) {
+        // an invalid pairwise surface: refused, which is the promise
+      } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("pairwise union cannot join"), std::string::npos) << message;
+        EXPECT_NE(message.find("one-pass method (the default)"), std::string::npos) << message;
+      }
+      o.method = SurfaceMethod::one_pass;
+      EXPECT_TRUE(compute_surface(placement.atoms, o).check.valid()) << "seed " << seed << ", probe " << probe;
+    }
   }
 }
 
