@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/text_fields.hpp"
 #include "molsurf/io.hpp"
 
 namespace molsurf {
@@ -69,8 +70,7 @@ void append_number(std::string& out, float value);
 // "x y z" (shortest round-trip numbers, no newline).
 void append_point(std::string& out, const Vec3& p);
 
-// Splits on blanks (space, tab, CR).
-std::vector<std::string_view> split_fields(std::string_view line);
+using text::split_fields;
 
 // Parsers that name the file and line in their errors; `what` says which field.
 double parse_double(std::string_view text, const path& file, std::size_t line, std::string_view what);

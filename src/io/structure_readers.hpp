@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/coordinate_range.hpp"
+#include "io/text_fields.hpp"
 #include "molsurf/atoms.hpp"
 
 namespace gemmi {
@@ -47,7 +48,7 @@ Structure select_atoms(ModelRecords model, const std::filesystem::path& path, St
                        const ReadOptions& options, const std::optional<RadiusTable>& table);
 
 // Small text helpers shared by the PQR, xyzr and radius-table parsers.
-std::vector<std::string_view> split_fields(std::string_view line);  // on spaces and tabs
+using text::split_fields;
 
 // The data lines of a whitespace-separated text file: '#' starts a comment, blank lines
 // are skipped, and line numbers (1-based) are kept for error messages.

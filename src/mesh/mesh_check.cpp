@@ -419,32 +419,31 @@ std::vector<std::string> MeshCheck::defects() const {
   if (non_finite_measures)
     lines.push_back("area or volume is not finite (coordinates too large to measure: overflow)");
   if (faces == 0) return lines;
-  if (boundary_edges)
-    lines.push_back(defect_line(boundary_edges, "boundary edge (a hole)", "boundary edges (holes)", "faces",
-                                examples_boundary));
-  if (nonmanifold_edges)
-    lines.push_back(defect_line(nonmanifold_edges, "non-manifold edge (more than two faces)",
-                                "non-manifold edges (more than two faces)", "faces", examples_nonmanifold_edge));
-  if (misoriented_edges)
-    lines.push_back(defect_line(misoriented_edges, "misoriented edge (its two faces traverse it the same way)",
-                                "misoriented edges (their two faces traverse them the same way)", "faces",
-                                examples_misoriented));
-  if (nonmanifold_vertices)
-    lines.push_back(defect_line(nonmanifold_vertices, "non-manifold vertex (more than one fan of faces)",
-                                "non-manifold vertices (more than one fan of faces)", "vertices",
-                                examples_nonmanifold_vertex));
-  if (degenerate_faces)
-    lines.push_back(defect_line(degenerate_faces, "degenerate face (repeated or collinear corners)",
-                                "degenerate faces (repeated or collinear corners)", "faces", examples_degenerate));
-  if (duplicate_faces)
-    lines.push_back(defect_line(duplicate_faces, "duplicate face (same three vertices as another)",
-                                "duplicate faces (same three vertices as another)", "faces", {}));
-  if (intersecting_pairs)
-    lines.push_back(defect_line(intersecting_pairs, "intersecting face pair (crossing or overlapping)",
-                                "intersecting face pairs (crossing or overlapping)", "faces", examples_intersecting));
-  if (inward_components)
-    lines.push_back(defect_line(inward_components, "inward component (outer shell with negative volume)",
-                                "inward components (outer shells with negative volume)", "", {}));
+  struct Defect {
+    std::size_t count;
+    const char *singular, *plural, *what;
+    const std::vector<std::size_t>* examples;
+  };
+  const std::vector<std::size_t> none;
+  const Defect kinds[] = {
+      {boundary_edges, "boundary edge (a hole)", "boundary edges (holes)", "faces", &examples_boundary},
+      {nonmanifold_edges, "non-manifold edge (more than two faces)", "non-manifold edges (more than two faces)",
+       "faces", &examples_nonmanifold_edge},
+      {misoriented_edges, "misoriented edge (its two faces traverse it the same way)",
+       "misoriented edges (their two faces traverse them the same way)", "faces", &examples_misoriented},
+      {nonmanifold_vertices, "non-manifold vertex (more than one fan of faces)",
+       "non-manifold vertices (more than one fan of faces)", "vertices", &examples_nonmanifold_vertex},
+      {degenerate_faces, "degenerate face (repeated or collinear corners)",
+       "degenerate faces (repeated or collinear corners)", "faces", &examples_degenerate},
+      {duplicate_faces, "duplicate face (same three vertices as another)",
+       "duplicate faces (same three vertices as another)", "faces", &none},
+      {intersecting_pairs, "intersecting face pair (crossing or overlapping)",
+       "intersecting face pairs (crossing or overlapping)", "faces", &examples_intersecting},
+      {inward_components, "inward component (outer shell with negative volume)",
+       "inward components (outer shells with negative volume)", "", &none},
+  };
+  for (const Defect& d : kinds)
+    if (d.count) lines.push_back(defect_line(d.count, d.singular, d.plural, d.what, *d.examples));
   return lines;
 }
 
