@@ -17,7 +17,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/shapes.hpp"
 #include "molsurf/surface.hpp"
-#include "surface/cleanup_face_grid.hpp"
+#include "mesh/face_grid.hpp"
 
 namespace molsurf {
 namespace {
@@ -386,9 +386,9 @@ TEST(Cleanup, GivesTheSameSurfaceOnOneAndTwoThreads) {
 
 // The index finds every face whose box meets the query's, before and after faces change,
 // including faces that leave the box the grid was built for (clamped onto its border).
-TEST(CleanupFaceGrid, FindsEveryFaceWhoseBoxMeetsTheQuery) {
+TEST(FaceGrid, FindsEveryFaceWhoseBoxMeetsTheQuery) {
   Mesh m = make_icosphere({}, 2, {.frequency = 6, .tag = 0});
-  CleanupFaceGrid grid(m, 0.3);
+  FaceGrid grid(m, 0.3);
   auto overlaps = [](const BoundingBox& a, const BoundingBox& b) {
     return !(a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y ||
              a.max.z < b.min.z || b.max.z < a.min.z);

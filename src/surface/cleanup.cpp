@@ -17,7 +17,7 @@
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/vertex_face_index.hpp"
-#include "surface/cleanup_face_grid.hpp"
+#include "mesh/face_grid.hpp"
 
 namespace molsurf {
 
@@ -67,7 +67,7 @@ struct CleanupShared {
       total += norm(m.vertices[t[1]] - m.vertices[t[0]]) + norm(m.vertices[t[2]] - m.vertices[t[1]]);
     }
     const double mean_edge = m.faces.empty() ? 1 : total / (2 * m.faces.size());
-    grid = std::make_unique<CleanupFaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
+    grid = std::make_unique<FaceGrid>(m, std::max(mean_edge, 1e-9) * 2);
     angle.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
     face_area.assign(m.faces.size(), std::numeric_limits<double>::quiet_NaN());
     area_budget = options.max_area_change * area;
@@ -93,7 +93,7 @@ struct CleanupShared {
   const CleanupOptions& options;
   std::vector<std::uint8_t> alive;
   VertexFaceIndex faces_of;
-  std::unique_ptr<CleanupFaceGrid> grid;
+  std::unique_ptr<FaceGrid> grid;
   std::vector<double> angle, face_area;  // per face; NaN: not measured since it changed
   double area_budget = 0, area_drift = 0;
   std::vector<std::uint32_t> component_of;  // per face
@@ -965,7 +965,7 @@ class Cleaner {
   const CleanupOptions& options_;
   std::vector<std::uint8_t>& alive_;
   VertexFaceIndex& faces_of_;
-  CleanupFaceGrid& grid_;
+  FaceGrid& grid_;
   std::vector<double>& angle_;
   std::vector<double>& area_;
   const std::vector<std::uint32_t>& component_of_;

@@ -1,5 +1,6 @@
 #pragma once
-// The cleanup's spatial index of faces: which faces lie near a box, while the faces change.
+// The editing layer's spatial index of faces: which faces lie near a box, while the faces
+// change (src/mesh/mesh_editor.hpp; the cleanup's crossing tests).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -13,18 +14,18 @@ namespace molsurf {
 
 // Faces by the cells of a uniform grid their boxes touch, with each face's box kept for a
 // cheap rejection. The exact crossing test of an edit needs every face near its new
-// faces; the faces change as the cleanup goes on, but only a few percent of them. So the
+// faces; the faces change as edits go on, but only a few percent of them. So the
 // faces as they are at construction sit in flat arrays (cells in a dense grid over the
 // mesh's box, one counting pass and one filling pass), and a face that changes leaves
 // them for small lists kept per block of 2 x 2 x 2 cells (a block is written only by the
 // edits near it, so edits far apart may change faces at the same time; see shard_side).
 // Cells outside the dense grid are clamped onto its border, the same way for insertion
-// and query, so nothing is missed.
-class CleanupFaceGrid {
+// and query, so nothing is missed. Faces appended after construction are not kept.
+class FaceGrid {
  public:
   // Cells of side `cell`, enlarged until the grid has at most about 4 cells per face (a
   // surface fills few of a volume's cells; the capsid would otherwise need 64 M).
-  CleanupFaceGrid(const Mesh& m, double cell) : m_(m), box_(m.faces.size()), in_flat_(m.faces.size(), 1) {
+  FaceGrid(const Mesh& m, double cell) : m_(m), box_(m.faces.size()), in_flat_(m.faces.size(), 1) {
     const BoundingBox all = bounding_box(m);
     origin_ = all.empty() ? Vec3{} : all.min;
     const Vec3 extent = all.empty() ? Vec3{} : all.max - all.min;
@@ -43,7 +44,7 @@ class CleanupFaceGrid {
     start_.assign(cells + 1, 0);
     // Counting and filling in parallel: the order of a cell's faces depends on the
     // threads, but a query's answer is a set (every caller's result is the same for any
-    // order of visits), so the cleanup's result does not.
+    // order of visits), so no editor's result does.
     const auto nf = static_cast<std::int64_t>(m.faces.size());
 #pragma omp parallel for schedule(static)
     for (std::int64_t f = 0; f < nf; ++f) {
