@@ -8,8 +8,8 @@
 
 #include "geometry/predicates.hpp"
 #include "geometry/triangle_intersection.hpp"
+#include "mesh/mesh_editor.hpp"
 #include "mesh/topology.hpp"
-#include "mesh/vertex_face_index.hpp"
 
 namespace molsurf::boolean_engine {
 
@@ -70,13 +70,15 @@ bool needs_repair(const Mesh& m, const Triangle& t, const std::vector<std::uint8
   return may_turn_over(m, t) || degenerate(m, t);
 }
 
+// The repair, on the editing layer (src/mesh/mesh_editor.hpp): what it finds broken and
+// which edit it tries for each; the layer makes, checks and undoes the edits.
 class Repairer {
  public:
   // Indexes only the faces that rounding can have touched: those with a rounded corner,
   // and every face around their corners (what collapses, flips and crossing tests read).
   Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
            const std::vector<std::uint8_t>& needs_repair, const std::vector<std::uint8_t>& frozen)
-      : m_(m), operand_(operand), source_(source), frozen_(frozen), alive_(m.faces.size(), 1) {
+      : m_(m), operand_(operand), source_(source), editable_(m, frozen), editor_(editable_) {
     // Only faces near the ones rounding can have broken (degenerate faces, and slivers
     // with a rounded corner) are indexed: three rings of faces around them, so the link
     // condition, the moves of a collapse and the crossing counts around it (two rings)
@@ -101,14 +103,14 @@ class Repairer {
       const Triangle& t = m.faces[f];
       if (mark[t[0]] || mark[t[1]] || mark[t[2]]) indexed_.push_back(f);
     }
-    for (std::uint32_t f : indexed_) index_face(f);
+    for (std::uint32_t f : indexed_) editable_.index(f);
   }
 
   RepairOutcome run(const std::vector<std::uint8_t>& rounded) {
     for (int pass = 0; pass < 8; ++pass) {
       bool changed = false;
       for (std::uint32_t f : candidates())
-        if (alive_[f] && degenerate(m_, m_.faces[f])) changed |= repair(f);
+        if (editor_.alive(f) && degenerate(m_, m_.faces[f])) changed |= repair(f);
       if (!changed) break;
     }
     // Folds: a face with a rounded corner that crosses a face sharing a corner with it, or
@@ -116,7 +118,7 @@ class Repairer {
     for (int pass = 0; pass < 8; ++pass) {
       bool changed = false;
       for (std::uint32_t f : candidates()) {
-        if (!alive_[f]) continue;
+        if (!editor_.alive(f)) continue;
         const Triangle& t = m_.faces[f];
         if (!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) continue;
         if (!may_turn_over(m_, t)) continue;  // rounding (~1e-16) cannot turn it over
@@ -125,40 +127,19 @@ class Repairer {
       if (!changed) break;
     }
     std::size_t left = 0;
-    for (std::uint32_t f : candidates()) left += alive_[f] && degenerate(m_, m_.faces[f]);
+    for (std::uint32_t f : candidates()) left += editor_.alive(f) && degenerate(m_, m_.faces[f]);
     compact();
-    return {left, refused_};
+    return {left, editor_.refused_frozen()};
   }
 
   // Indexed faces and faces added since (flips), in order.
   std::vector<std::uint32_t> candidates() const {
     std::vector<std::uint32_t> out = indexed_;
-    for (std::uint32_t f = first_added_; f < m_.faces.size(); ++f) out.push_back(f);
+    for (std::uint32_t f = editable_.first_added(); f < m_.faces.size(); ++f) out.push_back(f);
     return out;
   }
 
  private:
-  void index_face(std::uint32_t f) { faces_of_.add(f, m_.faces[f]); }
-  void unindex_face(std::uint32_t f) { faces_of_.remove(f, m_.faces[f]); }
-  std::span<const std::uint32_t> faces_of(Index v) const { return faces_of_.of(v); }
-  // The indexed faces on edge ab, in the order they were indexed.
-  std::vector<std::uint32_t> faces_on_edge(Index a, Index b) const { return molsurf::faces_on_edge(m_, faces_of(a), a, b); }
-
-  std::uint32_t add_face(const Triangle& t, std::uint32_t like) {
-    const auto f = static_cast<std::uint32_t>(m_.faces.size());
-    m_.faces.push_back(t);
-    operand_.push_back(operand_[like]);
-    source_.push_back(source_[like]);
-    if (!m_.face_tags.empty()) m_.face_tags.push_back(m_.face_tags[like]);
-    alive_.push_back(1);
-    index_face(f);
-    return f;
-  }
-  void kill(std::uint32_t f) {
-    unindex_face(f);
-    alive_[f] = 0;
-  }
-
   bool repair(std::uint32_t f) {
     const Triangle t = m_.faces[f];
     for (int i = 0; i < 3; ++i) {
@@ -172,8 +153,12 @@ class Repairer {
     return false;
   }
 
-  std::vector<Index> blocking_vertices(Index u, Index v) {
-    return molsurf::blocking_vertices(m_, faces_of(u), faces_of(v), u, v);
+  // The corner of the face on edge ab other than a and b (`none` if it has none).
+  Index third_corner(std::uint32_t g, Index a, Index b, Index none) const {
+    Index x = none;
+    for (Index w : m_.faces[g])
+      if (w != a && w != b) x = w;
+    return x;
   }
 
   // A zero-length edge uv whose collapse fails the link condition only because u and v
@@ -182,54 +167,37 @@ class Repairer {
   // that makes no face degenerate and leaves no more exact crossings around it, then uv
   // collapses. If it still cannot, the flips are undone.
   bool unblocked_collapse(Index u, Index v) {
-    struct Flipped {
-      std::uint32_t f, g, first_new;
-      Triangle old_f, old_g;
-    };
-    std::vector<Flipped> done;
-    auto undo_one = [&](const Flipped& flip) {
-      for (std::uint32_t added = flip.first_new; added < flip.first_new + 2; ++added)
-        if (alive_[added]) kill(added);
-      for (auto [h, tri] : {std::pair{flip.f, flip.old_f}, std::pair{flip.g, flip.old_g}}) {
-        m_.faces[h] = tri;
-        alive_[h] = 1;
-        index_face(h);
-      }
-    };
+    editor_.open_journal();
     for (int step = 0; step < 3; ++step) {
-      const std::vector<Index> blocking = blocking_vertices(u, v);
+      const std::vector<Index> blocking = editor_.blocking_vertices(u, v);
       if (blocking.empty()) break;
       bool flipped = false;
       for (std::size_t k = 0; k < blocking.size() && !flipped; ++k)
         for (const Index end : {v, u}) {
           const Index w = blocking[k];
-          const std::vector<std::uint32_t> on = faces_on_edge(end, w);
-          if (on.size() != 2 || touches_frozen({end, w})) continue;
-          Index c = end, d = end;
-          for (Index x : m_.faces[on[0]])
-            if (x != end && x != w) c = x;
-          for (Index x : m_.faces[on[1]])
-            if (x != end && x != w) d = x;
-          if (c == end || d == end || c == d || !faces_on_edge(c, d).empty() || touches_frozen({c, d})) continue;
+          const std::vector<std::uint32_t> on = editor_.faces_on_edge(end, w);
+          if (on.size() != 2 || editor_.touches_frozen({end, w})) continue;
+          const Index c = third_corner(on[0], end, w, end), d = third_corner(on[1], end, w, end);
+          if (c == end || d == end || c == d || !editor_.faces_on_edge(c, d).empty() || editor_.touches_frozen({c, d}))
+            continue;
           if (geometry::collinear3d(m_.vertices[end], m_.vertices[c], m_.vertices[d]) ||
               geometry::collinear3d(m_.vertices[w], m_.vertices[c], m_.vertices[d]))
             continue;
-          const std::size_t before = crossings_around({end, w, c, d});
-          const Flipped record{on[0], on[1], static_cast<std::uint32_t>(m_.faces.size()), m_.faces[on[0]],
-                               m_.faces[on[1]]};
-          replace_by_flip(on[0], on[1], c, d);
-          if (crossings_around({end, w, c, d}) <= before) {
-            done.push_back(record);
+          const std::size_t before = editor_.crossings_around({end, w, c, d});
+          editor_.commit(editor_.flip_appending(on[0], on[1], c, d));
+          if (editor_.crossings_around({end, w, c, d}) <= before) {
             flipped = true;
             break;
           }
-          undo_one(record);
+          editor_.undo_last();
         }
       if (!flipped) break;
     }
-    if (!done.empty() && collapse(u, v)) return true;
-    for (auto it = done.rbegin(); it != done.rend(); ++it) undo_one(*it);
-    return false;
+    const bool collapsed = !editor_.journal_empty() && collapse(u, v);
+    if (!collapsed)
+      while (!editor_.journal_empty()) editor_.undo_last();
+    editor_.close_journal();
+    return collapsed;
   }
 
   geometry::TrianglePairRelation relation(const Triangle& a, const Triangle& b) const {
@@ -244,7 +212,7 @@ class Repairer {
     const bool sliver = may_turn_over(m_, t);
     std::vector<std::uint32_t> ring;
     auto faces_around = [&](Index v, std::vector<std::uint32_t>& out) {
-      const auto around = faces_of(v);
+      const auto around = editor_.faces_of(v);
       out.insert(out.end(), around.begin(), around.end());
     };
     for (Index v : t) faces_around(v, ring);
@@ -256,10 +224,10 @@ class Repairer {
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     for (std::uint32_t g : ring)
-      if (g != f && alive_[g] && relation(t, m_.faces[g]) == geometry::TrianglePairRelation::intersecting) return true;
+      if (g != f && editor_.alive(g) && relation(t, m_.faces[g]) == geometry::TrianglePairRelation::intersecting)
+        return true;
     return false;
   }
-
 
   // A sliver along a crease, turned over by rounding its apex (the corner opposite its
   // longest edge): it crosses nothing itself, but the faces across its two short edges now
@@ -268,14 +236,14 @@ class Repairer {
     const auto [a, b, c] = longest_edge(m_.faces[f]);
     if (!rounded[c]) return false;
     auto across = [&](Index u, Index v) -> std::uint32_t {
-      const std::vector<std::uint32_t> on = faces_on_edge(u, v);
+      const std::vector<std::uint32_t> on = editor_.faces_on_edge(u, v);
       if (on.size() != 2) return ~0u;
       return on[0] == f ? on[1] : on[0];
     };
     const std::uint32_t g = across(a, b);
-    if (g == ~0u || !alive_[g]) return false;
+    if (g == ~0u || !editor_.alive(g)) return false;
     for (const std::uint32_t h : {across(b, c), across(c, a)})
-      if (h != ~0u && h != g && alive_[h] &&
+      if (h != ~0u && h != g && editor_.alive(h) &&
           relation(m_.faces[h], m_.faces[g]) == geometry::TrianglePairRelation::intersecting)
         return true;
     return false;
@@ -311,9 +279,9 @@ class Repairer {
   // coordinates, in a fixed order) when that leaves fewer crossings around it, the fewest
   // found; another rounding of the same exact point, so the surface moves by an ulp.
   bool checked_nudge(Index v) {
-    if (!frozen_.empty() && frozen_[v]) return false;
+    if (editor_.frozen(v)) return false;
     const Vec3 original = m_.vertices[v];
-    const std::size_t before = crossings_around({v});
+    const std::size_t before = editor_.crossings_around({v});
     std::size_t best = before;
     Vec3 best_position = original;
     constexpr double inf = std::numeric_limits<double>::infinity();
@@ -326,16 +294,16 @@ class Repairer {
           for (int axis = 0; axis < 3; ++axis)
             if (step[axis] != 0)
               (axis == 0 ? moved.x : axis == 1 ? moved.y : moved.z) = std::nextafter(original[axis], step[axis] * inf);
-          m_.vertices[v] = moved;
+          editor_.reposition(v, moved);
           bool flat = false;
-          for (std::uint32_t g : faces_of(v)) flat |= alive_[g] && degenerate(m_, m_.faces[g]);
+          for (std::uint32_t g : editor_.faces_of(v)) flat |= editor_.alive(g) && degenerate(m_, m_.faces[g]);
           if (flat) continue;
-          if (const std::size_t count = crossings_around({v}); count < best) {
+          if (const std::size_t count = editor_.crossings_around({v}); count < best) {
             best = count;
             best_position = moved;
           }
         }
-    m_.vertices[v] = best_position;
+    editor_.reposition(v, best_position);
     return best < before;
   }
 
@@ -355,154 +323,93 @@ class Repairer {
   // around the four corners than there were (exactly counted); otherwise changes nothing.
   bool checked_flip_longest_edge(std::uint32_t f) {
     const auto [a, b, c] = longest_edge(m_.faces[f]);
-    const std::vector<std::uint32_t> around = faces_on_edge(a, b);
+    const std::vector<std::uint32_t> around = editor_.faces_on_edge(a, b);
     if (around.size() != 2) return false;
     const std::uint32_t g = around[0] == f ? around[1] : around[0];
-    Index d = a;
-    for (Index w : m_.faces[g])
-      if (w != a && w != b) d = w;
-    if (d == a || d == c || !faces_on_edge(c, d).empty()) return false;
+    const Index d = third_corner(g, a, b, a);
+    if (d == a || d == c || !editor_.faces_on_edge(c, d).empty()) return false;
     if (geometry::collinear3d(m_.vertices[a], m_.vertices[c], m_.vertices[d]) ||
         geometry::collinear3d(m_.vertices[b], m_.vertices[c], m_.vertices[d]))
       return false;
-    const std::size_t before = crossings_around({a, b, c, d});
-    const Triangle old_f = m_.faces[f], old_g = m_.faces[g];
-    const auto first_new = static_cast<std::uint32_t>(m_.faces.size());
+    const std::size_t before = editor_.crossings_around({a, b, c, d});
     // No vertex moves and edge ab has both its faces here, so the open edges where
     // passive faces join (at frozen vertices) stay as they are.
-    replace_by_flip(f, g, c, d);
-    if (crossings_around({a, b, c, d}) < before) return true;
-    for (std::uint32_t added = first_new; added < m_.faces.size(); ++added)
-      if (alive_[added]) kill(added);
-    for (auto [h, tri] : {std::pair{f, old_f}, std::pair{g, old_g}}) {
-      m_.faces[h] = tri;
-      alive_[h] = 1;
-      index_face(h);
-    }
-    return false;
+    return commit_if(editor_.flip_appending(f, g, c, d), [&] { return editor_.crossings_around({a, b, c, d}) < before; });
   }
 
-  // Crossing pairs among the faces around the given vertices and their neighbours (exact).
-  std::size_t crossings_around(std::initializer_list<Index> centres) const {
-    std::vector<std::uint32_t> faces;
-    for (Index c : centres)
-      for (std::uint32_t g : faces_of(c))
-        for (Index w : m_.faces[g]) {
-          const auto around_w = faces_of(w);
-          faces.insert(faces.end(), around_w.begin(), around_w.end());
-        }
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < faces.size(); ++i)
-      for (std::size_t j = i + 1; j < faces.size(); ++j)
-        if (alive_[faces[i]] && alive_[faces[j]] &&
-            relation(m_.faces[faces[i]], m_.faces[faces[j]]) == geometry::TrianglePairRelation::intersecting)
-          ++count;
-    return count;
+  // Makes the edit and keeps it if `better()` then holds; otherwise undoes it.
+  template <class Better>
+  bool commit_if(const MeshEdit& e, Better&& better) {
+    editor_.open_journal();
+    editor_.commit(e);
+    const bool kept = better();
+    if (!kept) editor_.undo_last();
+    editor_.close_journal();
+    return kept;
   }
 
   // A collapse that leaves fewer crossings around it than there were (exactly counted);
   // clusters of near-coincident points clear over several passes.
   bool checked_collapse(Index u, Index v) {
-    if (touches_frozen({u, v})) return false;
-    const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
-    if (on_edge.size() != 2 || !link_condition(m_, faces_of(u), faces_of(v), on_edge, u, v)) return false;
+    if (editor_.touches_frozen({u, v})) return false;
+    const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(u, v);
+    if (on_edge.size() != 2 || !editor_.link_condition(u, v, on_edge)) return false;
+    const MeshEdit e = editor_.merge(u, v, on_edge);
     // A real face moving to u must not turn over; a sliver (rounding may already have
     // turned it) is judged by the crossing count alone.
-    for (std::uint32_t g : faces_of(v)) {
-      if (std::find(on_edge.begin(), on_edge.end(), g) != on_edge.end()) continue;
-      Triangle moved = m_.faces[g];
-      for (Index& w : moved)
-        if (w == v) w = u;
-      const Vec3 &a = m_.vertices[moved[0]], &b = m_.vertices[moved[1]], &c = m_.vertices[moved[2]];
-      if (geometry::collinear3d(a, b, c)) return false;
-      const Triangle& old = m_.faces[g];
-      if (may_turn_over(m_, old)) continue;
-      const Vec3 n_old = cross(m_.vertices[old[1]] - m_.vertices[old[0]], m_.vertices[old[2]] - m_.vertices[old[0]]);
-      if (!(dot(cross(b - a, c - a), n_old) > 0)) return false;
+    for (std::size_t k = 0; k < e.faces.size(); ++k) {
+      if (e.removes(k)) continue;
+      const Triangle& t = e.after[k];
+      const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
+      if (may_turn_over(m_, m_.faces[e.faces[k]])) {
+        if (geometry::collinear3d(a, b, c)) return false;
+      } else if (!MeshEditor::keeps_facing(a, b, c, e.reference[k], 0)) {
+        return false;
+      }
     }
-    const std::size_t before = crossings_around({u, v});
-    std::vector<std::pair<std::uint32_t, Triangle>> undo;
-    for (std::uint32_t g : faces_of(v)) undo.emplace_back(g, m_.faces[g]);
-    if (!collapse(u, v)) return false;
-    if (crossings_around({u}) < before) return true;
-    // Undone face by face: the faces on the edge were removed, the others moved to u.
-    for (const auto& [g, tri] : undo) {
-      if (alive_[g]) unindex_face(g);
-      m_.faces[g] = tri;
-      alive_[g] = 1;
-      index_face(g);
-    }
-    return false;
+    const std::size_t before = editor_.crossings_around({u, v});
+    return commit_if(e, [&] { return editor_.crossings_around({u}) < before; });
   }
 
-  // Merges v into u (same position). Link condition: the vertices adjacent to both are
-  // exactly the opposite corners of the faces on edge uv.
+  // Merges v into u (same position) when the link condition holds.
   bool collapse(Index u, Index v) {
-    if (touches_frozen({u, v})) return false;
-    const std::vector<std::uint32_t> on_edge = faces_on_edge(u, v);
-    if (!link_condition(m_, faces_of(u), faces_of(v), on_edge, u, v)) return false;
-    for (std::uint32_t g : on_edge) kill(g);
-    const std::vector<std::uint32_t> moving(faces_of(v).begin(), faces_of(v).end());
-    for (std::uint32_t g : moving) {
-      unindex_face(g);
-      for (Index& w : m_.faces[g])
-        if (w == v) w = u;
-      index_face(g);
-    }
+    if (editor_.touches_frozen({u, v})) return false;
+    const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(u, v);
+    if (!editor_.link_condition(u, v, on_edge)) return false;
+    editor_.commit(editor_.merge(u, v, on_edge));
     return true;
   }
 
   // Face f = (.., a, b, .. with corner c strictly inside edge ab): flip ab with the other face.
   bool flip(std::uint32_t f, Index a, Index b, Index c) {
-    const std::vector<std::uint32_t> around = faces_on_edge(a, b);
+    const std::vector<std::uint32_t> around = editor_.faces_on_edge(a, b);
     if (around.size() != 2) return false;
     const std::uint32_t g = around[0] == f ? around[1] : around[0];
-    Index d = 0;
-    for (Index w : m_.faces[g])
-      if (w != a && w != b) d = w;
-    if (!faces_on_edge(c, d).empty()) return false;
-    if (touches_frozen({a, b, c, d})) return false;
-    replace_by_flip(f, g, c, d);
+    const Index d = third_corner(g, a, b, 0);
+    if (!editor_.faces_on_edge(c, d).empty()) return false;
+    // Frozen vertices join faces outside this result: no repair may move, merge or re-link
+    // them (the caller redoes the Boolean on the whole solids when one was needed).
+    if (editor_.touches_frozen({a, b, c, d})) return false;
+    editor_.commit(editor_.flip_appending(f, g, c, d));
     return true;
   }
 
-  // Faces f (corner c) and g (corner d) on edge ab become the two faces on edge cd.
-  void replace_by_flip(std::uint32_t f, std::uint32_t g, Index c, Index d) {
-    const Triangle& tf = m_.faces[f];
-    int k = 0;
-    while (tf[k] != c) ++k;
-    // f runs from -> to (corner order c, from, to), so g runs to -> from.
-    const Index from = tf[(k + 1) % 3], to = tf[(k + 2) % 3];
-    kill(f);
-    kill(g);
-    add_face({from, d, c}, g);
-    add_face({d, to, c}, g);
+  // Drops the dead faces; the faces flips appended take their operand and source from
+  // the face they are tagged like.
+  void compact() {
+    for (std::uint32_t f = editable_.first_added(); f < m_.faces.size(); ++f) {
+      operand_.push_back(operand_[editable_.added_like(f)]);
+      source_.push_back(source_[editable_.added_like(f)]);
+    }
+    keep_alive_faces(m_, editable_.alive_faces(), operand_, source_);
   }
-
-  // Frozen vertices join faces outside this result: no repair may move, merge or re-link
-  // them (the caller redoes the Boolean on the whole solids when one was needed).
-  bool touches_frozen(std::initializer_list<Index> vertices) {
-    for (Index v : vertices)
-      if (!frozen_.empty() && frozen_[v]) {
-        ++refused_;
-        return true;
-      }
-    return false;
-  }
-
-  void compact() { keep_alive_faces(m_, alive_, operand_, source_); }
 
   Mesh& m_;
   std::vector<std::uint8_t>& operand_;
   std::vector<std::uint32_t>& source_;
-  const std::vector<std::uint8_t>& frozen_;
-  std::size_t refused_ = 0;
-  std::vector<std::uint8_t> alive_;
   std::vector<std::uint32_t> indexed_;
-  std::uint32_t first_added_ = static_cast<std::uint32_t>(m_.faces.size());
-  VertexFaceIndex faces_of_{m_.vertices.size()};  // the indexed faces around each vertex
+  EditableMesh editable_;
+  MeshEditor editor_;
 };
 
 }  // namespace
