@@ -300,9 +300,10 @@ void MeshEditor::reposition(Index v, const Vec3& p) {
   s_.mesh_.vertices[v] = p;
 }
 
-// Lists the faces back in the edit's order: a face removed or changed is listed after the
-// faces it did not touch, so the order around a vertex after an undo is not the one before
-// (what the editors that built on this layer have always seen).
+// Lists the faces back in the edit's order: a face removed or changed comes after the faces
+// the edit did not touch, so the order around a vertex after an undo need not be the one
+// before. The editors' results depend on that order (it decides which face an edge's
+// first is), which is why an edit's builder fixes it.
 MeshEdit MeshEditor::undo_last() {
   if (!journaling_ || journal_.empty()) throw std::logic_error("MeshEditor::undo_last: nothing journaled");
   Step step = std::move(journal_.back());
