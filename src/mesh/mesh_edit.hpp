@@ -32,7 +32,13 @@ struct MeshEdit {
   Vec3 target;
 
   bool empty() const { return faces.empty() && added.empty(); }
-  bool removes(std::size_t k) const { return after[k] == kRemoved; }
+  // No face has a corner kNoVertex, so the first corner tells (cheaper than all three).
+  bool removes(std::size_t k) const { return after[k][0] == kNoVertex; }
+  void reserve(std::size_t n) {
+    faces.reserve(n);
+    after.reserve(n);
+    reference.reserve(n);
+  }
   void remove(std::uint32_t f) {
     faces.push_back(f);
     after.push_back(kRemoved);

@@ -45,16 +45,12 @@ bool MeshEditor::link_condition(Index u, Index v, std::span<const std::uint32_t>
   return molsurf::link_condition(mesh(), faces_of(u), faces_of(v), on_edge, u, v);
 }
 
-Vec3 MeshEditor::normal(const Triangle& t) const {
-  const Vec3 &a = mesh().vertices[t[0]], &b = mesh().vertices[t[1]], &c = mesh().vertices[t[2]];
-  return cross(b - a, c - a);
-}
-
 MeshEdit MeshEditor::collapse(Index u, Index v, std::span<const std::uint32_t> on_edge, const Vec3& target) const {
   const Mesh& m = mesh();
   auto on = [&](std::uint32_t g) { return std::find(on_edge.begin(), on_edge.end(), g) != on_edge.end(); };
   MeshEdit e;
   e.kind = MeshEdit::Kind::collapse;
+  e.reserve(faces_of(u).size() + faces_of(v).size());
   for (std::uint32_t g : on_edge) e.remove(g);
   for (std::uint32_t g : faces_of(v)) {
     if (on(g)) continue;
@@ -149,16 +145,11 @@ MeshEdit MeshEditor::flip_appending(std::uint32_t f, std::uint32_t g, Index c, I
 MeshEdit MeshEditor::move(Index v, const Vec3& target) const {
   MeshEdit e;
   e.kind = MeshEdit::Kind::move;
+  e.reserve(faces_of(v).size());
   for (std::uint32_t g : faces_of(v)) e.change(g, mesh().faces[g], normal(mesh().faces[g]));
   e.moved = v;
   e.target = target;
   return e;
-}
-
-bool MeshEditor::keeps_facing(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& reference, double min_cos) {
-  if (geometry::collinear3d(a, b, c)) return false;
-  const Vec3 n = cross(b - a, c - a);
-  return dot(n, reference) > min_cos * norm(n) * norm(reference);
 }
 
 bool MeshEditor::crosses_nothing(const MeshEdit& e) {

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/predicates.hpp"
 #include "mesh/face_grid.hpp"
 #include "mesh/mesh_edit.hpp"
 #include "mesh/vertex_face_index.hpp"
@@ -79,7 +80,10 @@ class MeshEditor {
   // The link condition for collapsing edge uv (its faces `on_edge`): the collapse keeps a
   // 2-manifold.
   bool link_condition(Index u, Index v, std::span<const std::uint32_t> on_edge) const;
-  Vec3 normal(const Triangle& t) const;
+  Vec3 normal(const Triangle& t) const {
+    const Vec3 &a = mesh().vertices[t[0]], &b = mesh().vertices[t[1]], &c = mesh().vertices[t[2]];
+    return cross(b - a, c - a);
+  }
 
   // Edits, described and not made. Each changed face's reference is its present normal
   // unless said otherwise.
@@ -104,7 +108,11 @@ class MeshEditor {
 
   // The no-turnover test of a new face abc: not degenerate (exact) and its normal within
   // the angle whose cosine is `min_cos` of `reference` (0: any angle under 90 degrees).
-  static bool keeps_facing(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& reference, double min_cos);
+  static bool keeps_facing(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& reference, double min_cos) {
+    if (geometry::collinear3d(a, b, c)) return false;
+    const Vec3 n = cross(b - a, c - a);
+    return dot(n, reference) > min_cos * norm(n) * norm(reference);
+  }
   // Exactly: no face of the edit meets a face near it (the faces by place) or another face
   // of the edit beyond the corners and edges they share. Needs index_all.
   bool crosses_nothing(const MeshEdit& e);
