@@ -158,7 +158,6 @@ std::string atom_token(const Atom& atom) {
   return token.empty() ? "?" : token;
 }
 
-// The first header line: what the surface is, on one line.
 // The first header line: what the surface is, on one line; for a molecular surface (atoms
 // given) also why every row has MSMS's contact type.
 std::string header_comment(const char* what, const MeshWriteOptions& options) {
@@ -199,6 +198,16 @@ void append_formatted(std::string& out, const char* format, Args... args) {
   char buffer[160];
   const int length = std::snprintf(buffer, sizeof buffer, format, args...);
   out.append(buffer, static_cast<std::size_t>(std::clamp(length, 0, static_cast<int>(sizeof buffer) - 1)));
+}
+
+// MSMS's header of a .vert or .face file: the comment line, the column line and the line
+// with the count, the number of spheres, the density and the probe radius.
+void append_msms_header(std::string& out, const char* what, const char* count_column, std::size_t count,
+                        std::size_t spheres, const MeshWriteOptions& options) {
+  out += header_comment(what, options);
+  out += count_column;
+  out += " #sphere density probe_r\n";
+  append_formatted(out, "%7zu %7zu %5.2f %5.2f\n", count, spheres, options.density, options.probe_radius);
 }
 
 // Calls on_row(fields, line) for each data row of one file of the pair, after MSMS's
@@ -251,12 +260,7 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
 
   std::string vert;
   vert.reserve(mesh.vertex_count() * (names ? 100 : 82) + 256);
-  if (options.msms_header) {
-    vert += header_comment("vertices", options);
-    vert += "#vertex #sphere density probe_r\n";
-    append_formatted(vert, "%7zu %7zu %5.2f %5.2f\n", mesh.vertex_count(), spheres, options.density,
-                     options.probe_radius);
-  }
+  if (options.msms_header) append_msms_header(vert, "vertices", "#vertex", mesh.vertex_count(), spheres, options);
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& p = mesh.vertices[v];
     const Vec3& n = normals[v];
@@ -275,12 +279,7 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
 
   std::string face;
   face.reserve(mesh.face_count() * 32 + 256);
-  if (options.msms_header) {
-    face += header_comment("faces", options);
-    face += "#faces  #sphere density probe_r\n";
-    append_formatted(face, "%7zu %7zu %5.2f %5.2f\n", mesh.face_count(), spheres, options.density,
-                     options.probe_radius);
-  }
+  if (options.msms_header) append_msms_header(face, "faces", "#faces ", mesh.face_count(), spheres, options);
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const Triangle& t = mesh.faces[f];
     append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, kContactType,

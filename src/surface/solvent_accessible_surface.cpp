@@ -55,16 +55,14 @@ std::vector<std::uint32_t> spatial_order(std::span<const Atom> atoms) {
 }  // namespace
 
 SurfaceLevel& SurfaceLevel::operator+=(const BooleanStats& m) {
-  SurfaceLevel one;
-  one.merges = 1;
-  one.faces_in = m.faces_a + m.faces_b;
-  one.active_faces = m.active_faces;
-  one.faces_out = m.output_faces;
-  one.split_faces = m.split_faces;
-  one.ray_casts = m.ray_casts;
-  one.whole_reruns = m.whole_reruns;
-  one.steps = m.seconds;
-  return *this += one;
+  return *this += SurfaceLevel{.merges = 1,
+                               .faces_in = m.faces_a + m.faces_b,
+                               .active_faces = m.active_faces,
+                               .faces_out = m.output_faces,
+                               .split_faces = m.split_faces,
+                               .ray_casts = m.ray_casts,
+                               .whole_reruns = m.whole_reruns,
+                               .steps = m.seconds};
 }
 
 SurfaceLevel& SurfaceLevel::operator+=(const SurfaceLevel& o) {
