@@ -193,5 +193,42 @@ TEST(CoplanarFaces, LatticeWhosePairwiseMergeLeftAFoldAlongACrease) {
   EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1));
 }
 
+// Icospheres on a lattice or an icosahedral shell, where the pairwise union's merges
+// found points that are one point of the input (exact x = 0) a rounding error apart,
+// because earlier merges had rounded their operands: runs of vertices 1e-18 apart on one
+// line, clusters a few ulps wide with fans of nearly collinear edges to them. The next
+// merge cut those slivers into pieces its own rounding folded (crossings, collinear
+// faces, misoriented edges), or met two edges of one operand crossing a face at one
+// position under two keys (no valid triangle in the split), or agreed with the one-pass
+// union only to 3e-7; or a rounded edge lay in the plane of a face that earlier
+// roundings had tilted, and rounding moved it through that face (neither a sliver).
+// Each merge now rounds again the rounded corners of any face that crosses a neighbour,
+// and collapses the edges a rounding error long at its rounded points once its result is
+// valid (where that leaves no crossing around them).
+TEST(CoplanarFaces, PointsARoundingErrorApartAfterEarlierMerges) {
+  struct Case {
+    testing::PlacementFamily family;
+    std::uint32_t seed;
+    int frequency;
+    double probe;
+  };
+  using enum testing::PlacementFamily;
+  for (const Case c : {Case{lattice, 1028, 1, 0.7},             // crossings
+                       Case{icosahedral_shell, 1051, 1, 0.7},   // collinear corners
+                       Case{icosahedral_shell, 1057, 2, 1.4},   // misoriented edges
+                       Case{icosahedral_shell, 1086, 1, 0.7},   // no valid triangle
+                       Case{icosahedral_shell, 1067, 2, 0.7},   // area 3e-7 off
+                       Case{icosahedral_shell, 1024, 1, 1.4},   // an edge through a tilted face
+                       Case{icosahedral_shell, 1074, 1, 1.4}})  // the same
+  {
+    const testing::DegeneratePlacement p = testing::degenerate_placement(c.family, c.seed);
+    SphereOptions o;
+    o.frequency = c.frequency;
+    o.probe = c.probe;
+    EXPECT_TRUE(testing::methods_agree(p.atoms, o, 1))
+        << p.family << " seed " << c.seed << ", frequency " << c.frequency << ", probe " << c.probe;
+  }
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -4,6 +4,7 @@
 #include <limits>
 #include <initializer_list>
 #include <array>
+#include <tuple>
 #include <cmath>
 
 #include "geometry/predicates.hpp"
@@ -77,8 +78,9 @@ class Repairer {
   // Indexes only the faces that rounding can have touched: those with a rounded corner,
   // and every face around their corners (what collapses, flips and crossing tests read).
   Repairer(Mesh& m, std::vector<std::uint8_t>& operand, std::vector<std::uint32_t>& source,
-           const std::vector<std::uint8_t>& needs_repair, const std::vector<std::uint8_t>& frozen)
-      : m_(m), operand_(operand), source_(source), editable_(m, frozen), editor_(editable_) {
+           const std::vector<std::uint8_t>& needs_repair, const std::vector<std::uint8_t>& frozen,
+           const RepairOptions& options)
+      : m_(m), operand_(operand), source_(source), options_(options), editable_(m, frozen), editor_(editable_) {
     // Only faces near the ones rounding can have broken (degenerate faces, and slivers
     // with a rounded corner) are indexed: three rings of faces around them, so the link
     // condition, the moves of a collapse and the crossing counts around it (two rings)
@@ -113,6 +115,7 @@ class Repairer {
         if (editor_.alive(f) && degenerate(m_, m_.faces[f])) changed |= repair(f);
       if (!changed) break;
     }
+    if (options_.nudge_every_fold) nudge_folds(rounded);
     // Folds: a face with a rounded corner that crosses a face sharing a corner with it, or
     // a sliver whose neighbours cross the face across its longest edge.
     for (int pass = 0; pass < 8; ++pass) {
@@ -126,10 +129,79 @@ class Repairer {
       }
       if (!changed) break;
     }
+    if (options_.collapse_tiny_edges) collapse_tiny_edges(rounded);
     std::size_t left = 0;
     for (std::uint32_t f : candidates()) left += editor_.alive(f) && degenerate(m_, m_.faces[f]);
     compact();
-    return {left, editor_.refused_frozen()};
+    return {left, editor_.refused_frozen(), std::move(collapsed_)};
+  }
+
+  // A face with a rounded corner that crosses a face sharing a corner with it, whatever
+  // its shape. In a merge of the pairwise surface method an edge between two rounded
+  // points can lie exactly in the plane of a face of the other operand that earlier
+  // roundings tilted by 1e-16, and rounding moves the edge through that face although
+  // neither face is a sliver (the fold pass in run() looks at slivers and tiny faces only).
+  // Each rounded corner of such a face is rounded again (checked_nudge: a neighbouring
+  // double, kept only when that leaves fewer exact crossings around it), before the folds
+  // of slivers get the larger changes.
+  void nudge_folds(const std::vector<std::uint8_t>& rounded) {
+    for (int pass = 0; pass < 8; ++pass) {
+      bool changed = false;
+      for (std::uint32_t f : candidates()) {
+        if (!editor_.alive(f)) continue;
+        const Triangle& t = m_.faces[f];
+        if ((!rounded[t[0]] && !rounded[t[1]] && !rounded[t[2]]) || !crosses_a_neighbour(f)) continue;
+        for (Index v : t)
+          if (rounded[v] && checked_nudge(v)) {
+            changed = true;
+            break;
+          }
+      }
+      if (!changed) break;
+    }
+  }
+
+  // Edges within a rounding error of zero length at a rounded point (kTinyUlps ulps of
+  // their coordinates: the length only selects). After a merge of the pairwise surface
+  // method, points that were one point of the input (exact x = 0 on a lattice) can be
+  // found a rounding error apart, because the operands were rounded by earlier merges: a
+  // run of vertices 1e-18 apart on one line, a cluster a few ulps wide with a fan of
+  // nearly collinear edges to it. The result is valid, but the next merge cuts those
+  // slivers into pieces that its own rounding cannot keep apart (crossings, collinear
+  // faces), or meets two sheets touching along them (two points at one place). Once the
+  // result is valid, each such edge is collapsed, the rounded end merged into the other
+  // (an input vertex stays), when the collapse is valid (link condition, no face made
+  // degenerate or turned over) and leaves no exact crossing around the kept vertex; the
+  // surface moves by the edge's length. Passes until nothing changes, shortest edges first.
+  void collapse_tiny_edges(const std::vector<std::uint8_t>& rounded) {
+    for (int pass = 0; pass < 8; ++pass) {
+      std::vector<std::tuple<double, Index, Index>> tiny;
+      for (std::uint32_t f : candidates()) {
+        if (!editor_.alive(f)) continue;
+        const Triangle& t = m_.faces[f];
+        for (int i = 0; i < 3; ++i) {
+          const Index u = t[i], v = t[(i + 1) % 3];
+          if (u > v || (!rounded[u] && !rounded[v])) continue;  // each edge once, from its lower end
+          const Vec3 &a = m_.vertices[u], &b = m_.vertices[v];
+          const double scale = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x),
+                                         std::fabs(b.y), std::fabs(b.z)});
+          const double length = norm(b - a), reach = kTinyUlps * scale * std::numeric_limits<double>::epsilon();
+          if (length <= reach) tiny.emplace_back(length, u, v);
+        }
+      }
+      std::sort(tiny.begin(), tiny.end());
+      tiny.erase(std::unique(tiny.begin(), tiny.end()), tiny.end());
+      bool changed = false;
+      for (const auto& [length, u, v] : tiny) {
+        if (editor_.faces_of(u).empty() || editor_.faces_of(v).empty()) continue;  // merged away in this pass
+        // Keep an input vertex where there is one: it is exact.
+        const bool keep_u = !rounded[u] || rounded[v];
+        if (checked_collapse(keep_u ? u : v, keep_u ? v : u, /*optional=*/true) ||
+            (rounded[u] && rounded[v] && checked_collapse(keep_u ? v : u, keep_u ? u : v, /*optional=*/true)))
+          changed = true;
+      }
+      if (!changed) break;
+    }
   }
 
   // Indexed faces and faces added since (flips), in order.
@@ -349,9 +421,11 @@ class Repairer {
   }
 
   // A collapse that leaves fewer crossings around it than there were (exactly counted);
-  // clusters of near-coincident points clear over several passes.
-  bool checked_collapse(Index u, Index v) {
-    if (editor_.touches_frozen({u, v})) return false;
+  // clusters of near-coincident points clear over several passes. An `optional` collapse
+  // (not needed for validity: collapse_tiny_edges) must leave no crossing around it, and
+  // is not counted as refused at a frozen vertex (that would redo the Boolean whole).
+  bool checked_collapse(Index u, Index v, bool optional = false) {
+    if (optional ? editor_.frozen(u) || editor_.frozen(v) : editor_.touches_frozen({u, v})) return false;
     const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(u, v);
     if (on_edge.size() != 2 || !editor_.link_condition(u, v, on_edge)) return false;
     const MeshEdit e = editor_.merge(u, v, on_edge);
@@ -368,7 +442,12 @@ class Repairer {
       }
     }
     const std::size_t before = editor_.crossings_around({u, v});
-    return commit_if(e, [&] { return editor_.crossings_around({u}) < before; });
+    const bool kept = commit_if(e, [&] {
+      const std::size_t after = editor_.crossings_around({u});
+      return optional ? after == 0 : after < before;
+    });
+    if (kept) collapsed_.emplace_back(v, u);
+    return kept;
   }
 
   // Merges v into u (same position) when the link condition holds.
@@ -377,6 +456,7 @@ class Repairer {
     const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(u, v);
     if (!editor_.link_condition(u, v, on_edge)) return false;
     editor_.commit(editor_.merge(u, v, on_edge));
+    collapsed_.emplace_back(v, u);
     return true;
   }
 
@@ -407,9 +487,11 @@ class Repairer {
   Mesh& m_;
   std::vector<std::uint8_t>& operand_;
   std::vector<std::uint32_t>& source_;
+  RepairOptions options_;
   std::vector<std::uint32_t> indexed_;
   EditableMesh editable_;
   MeshEditor editor_;
+  std::vector<std::pair<Index, Index>> collapsed_;  // (removed, kept), in order
 };
 
 }  // namespace
@@ -418,7 +500,7 @@ bool may_turn_over(const Mesh& m, const Triangle& t) { return is_sliver(m, t) ||
 
 RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
                               std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded,
-                              const std::vector<std::uint8_t>& frozen) {
+                              const std::vector<std::uint8_t>& frozen, const RepairOptions& options) {
   // Most results have no degenerate face and no sliver at a rounded point: then nothing
   // is indexed at all. The faces to repair are found in parallel (exact collinearity).
   const auto nf = static_cast<std::int64_t>(mesh.faces.size());
@@ -430,7 +512,7 @@ RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operan
     any += needs[f];
   }
   if (any == 0) return {};
-  return Repairer(mesh, face_operand, face_source, needs, frozen).run(rounded);
+  return Repairer(mesh, face_operand, face_source, needs, frozen, options).run(rounded);
 }
 
 }  // namespace molsurf::boolean_engine

@@ -15,6 +15,7 @@
 //    else the shortest edge that can be collapsed with the link condition, no face turned
 //    over and no crossing left around the kept vertex (all exact).
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "molsurf/mesh.hpp"
@@ -30,6 +31,21 @@ bool may_turn_over(const Mesh& mesh, const Triangle& t);
 struct RepairOutcome {
   std::size_t degenerate_left = 0;  // faces still degenerate afterwards (0 unless blocked)
   std::size_t refused_frozen = 0;   // repairs not done because they would touch a frozen vertex
+  // (removed, kept) per collapse, in order: what was true of a removed vertex's place
+  // (the sheets may touch there) is now true of the kept one's.
+  std::vector<std::pair<Index, Index>> collapsed;
+};
+
+// What the Boolean's results need beyond that, as the operands of later merges of the
+// pairwise surface method (whose own operands earlier roundings tilted by 1e-16); the
+// one-pass union does without (repair_rounding.cpp):
+struct RepairOptions {
+  // any face with a rounded corner that crosses a neighbour, not only slivers and tiny
+  // faces, has its rounded corners rounded again first (another rounding only);
+  bool nudge_every_fold = false;
+  // once the result is valid, edges a rounding error long at a rounded point are
+  // collapsed where that leaves no exact crossing around them.
+  bool collapse_tiny_edges = false;
 };
 
 // `rounded[v]`: vertex v is a rounded intersection point (the only places rounding can
@@ -37,6 +53,6 @@ struct RepairOutcome {
 // no repair may touch.
 RepairOutcome repair_rounding(Mesh& mesh, std::vector<std::uint8_t>& face_operand,
                               std::vector<std::uint32_t>& face_source, const std::vector<std::uint8_t>& rounded,
-                              const std::vector<std::uint8_t>& frozen);
+                              const std::vector<std::uint8_t>& frozen, const RepairOptions& options = {});
 
 }  // namespace molsurf::boolean_engine

@@ -158,15 +158,16 @@ std::size_t duplicate_fan_vertices(Mesh& m, const FacePairs& pairs, const std::v
 // duplicated: the edge is then split at its midpoint (each half-face keeps its pairing),
 // and the midpoint, which the sheets do not share, is duplicated.
 std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint32_t>& point_of_vertex,
-                                    const Arrangement& arr) {
+                                    const Arrangement& arr, const std::vector<std::uint8_t>& touching) {
   Mesh& m = r.mesh;
-  // Sheets can only touch at points on both surfaces that are not transversal crossings:
+  // Sheets can only touch at points on both surfaces that are not transversal crossings
+  // (`touching`: such points, and the vertices the rounding repair merged them into):
   // look at the faces around them only (in a generic union there are none).
   std::vector<std::uint32_t> near;
   if (std::find(arr.may_touch.begin(), arr.may_touch.end(), 1) == arr.may_touch.end()) return 0;
   for (std::uint32_t f = 0; f < m.faces.size(); ++f)
     for (std::uint32_t v : m.faces[f])
-      if (arr.may_touch[point_of_vertex[v]]) {
+      if (touching[v]) {
         near.push_back(f);
         break;
       }
@@ -178,7 +179,7 @@ std::size_t split_touching_vertices(StitchResult& r, const std::vector<std::uint
   }
   const std::size_t original_vertices = point_of_vertex.size();
   auto may_split = [&](std::uint32_t v) {  // on both surfaces, or a midpoint added below
-    return v >= original_vertices || arr.may_touch[point_of_vertex[v]];
+    return v >= original_vertices || touching[v];
   };
   std::size_t copies = duplicate_fan_vertices(m, pairs, near, may_split);
   if (pairs.empty()) return copies;
@@ -266,8 +267,18 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
     for (std::size_t v = 0; v < frozen.size(); ++v)
       frozen[v] = point_of_vertex[v] < ops.vertex_count() && ops.frozen(point_of_vertex[v]);
   }
-  r.repair = repair_rounding(r.mesh, r.face_operand, r.face_source, rounded, frozen);
-  if (keep_sheets_apart) r.split_vertices = split_touching_vertices(r, point_of_vertex, arr);
+  // The result may feed a later merge (the pairwise surface method): the repair's options
+  // for operands tilted by earlier roundings.
+  r.repair = repair_rounding(r.mesh, r.face_operand, r.face_source, rounded, frozen,
+                             {.nudge_every_fold = true, .collapse_tiny_edges = true});
+  if (keep_sheets_apart) {
+    // Where the sheets may touch: on the points found so, and on the vertices that the
+    // repair merged such a point into.
+    std::vector<std::uint8_t> touching(point_of_vertex.size());
+    for (std::size_t v = 0; v < touching.size(); ++v) touching[v] = arr.may_touch[point_of_vertex[v]];
+    for (auto [removed, kept] : r.repair.collapsed) touching[kept] |= touching[removed];
+    r.split_vertices = split_touching_vertices(r, point_of_vertex, arr, touching);
+  }
   // Collapses leave vertices no face uses: renumber in order of first use.
   std::vector<Index> renumber(r.mesh.vertices.size(), ~Index{0});
   std::vector<Vec3> used;

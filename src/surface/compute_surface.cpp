@@ -83,9 +83,10 @@ class Pipeline {
     return attempt;
   }
 
-  // The pairwise union stops on some exactly symmetric placements (an operand that touches
-  // itself where a face of the other passes: docs/boolean.md, "Still open"). That is a known
-  // limit of the reference method, said as such, not an internal error.
+  // The pairwise union could stop on exactly symmetric placements (an operand that touches
+  // itself where a face of the other passes; none of the long degenerate battery does now:
+  // docs/boolean.md, "Known limits"). That is a limit of the reference method, said as
+  // such, not an internal error.
   SurfaceResult pairwise_union(const SurfaceOptions& surface_options) const {
     try {
       return solvent_accessible_surface(atoms_, surface_options);
