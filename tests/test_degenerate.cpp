@@ -219,7 +219,8 @@ TEST(CoplanarFaces, PointsARoundingErrorApartAfterEarlierMerges) {
                        Case{icosahedral_shell, 1086, 1, 0.7},   // no valid triangle
                        Case{icosahedral_shell, 1067, 2, 0.7},   // area 3e-7 off
                        Case{icosahedral_shell, 1024, 1, 1.4},   // an edge through a tilted face
-                       Case{icosahedral_shell, 1074, 1, 1.4}})  // the same
+                       Case{icosahedral_shell, 1074, 1, 1.4},   // the same
+                       Case{lattice, 1004, 1, 1.4}})            // a sliver folded flat onto its neighbour
   {
     const testing::DegeneratePlacement p = testing::degenerate_placement(c.family, c.seed);
     SphereOptions o;

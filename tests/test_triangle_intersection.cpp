@@ -9,6 +9,7 @@
 using molsurf::Mesh;
 using molsurf::Vec3;
 using molsurf::geometry::classify_triangle_pair;
+using molsurf::geometry::folded_flat;
 using molsurf::geometry::is_degenerate_face;
 using molsurf::geometry::segment_meets_triangle;
 using Relation = molsurf::geometry::TrianglePairRelation;
@@ -123,6 +124,27 @@ TEST(TrianglePair, SharedVertex) {
   EXPECT_EQ(pair({3, 3, 0}, {3, 3, 1}), Relation::contact);
   // Coplanar, one inside the other but facing the other way: pressed face to face.
   EXPECT_EQ(pair({0.2, 1, 0}, {1, 0.2, 0}), Relation::contact);
+}
+
+// Faces at one shared vertex lying face to face: a contact for classify_triangle_pair,
+// a flat fold for the rounding repair of a Boolean's result.
+TEST(TrianglePair, FoldedFlat) {
+  auto fold = [](const Vec3& c, const Vec3& d) {
+    const Mesh m = make_mesh({kO, kX2, kY2, c, d}, {{0, 1, 2}, {0, 3, 4}});
+    const bool f = folded_flat(m, m.faces[0], m.faces[1]);
+    EXPECT_EQ(folded_flat(m, m.faces[1], m.faces[0]), f) << "symmetric";
+    return f;
+  };
+  EXPECT_TRUE(fold({0.2, 1, 0}, {1, 0.2, 0}));              // coplanar, overlapping, facing away
+  EXPECT_FALSE(fold({1, 0.2, 0}, {0.2, 1, 0}));             // facing the same way (a crossing instead)
+  EXPECT_FALSE(fold({0.2, 1, 0x1p-20}, {1, 0.2, 0}));       // not coplanar
+  EXPECT_FALSE(fold({-0.1, -1, 0}, {-1, -0.1, 0}));         // coplanar, facing away, apart
+  EXPECT_FALSE(fold({1, 0, 0}, {0, 0, 1}));                  // touching along an edge line only
+  // A shared edge or no shared index is not such a fold.
+  const Mesh edge = make_mesh({kO, kX2, kY2, {1, 1, 0}}, {{0, 1, 2}, {1, 0, 3}});
+  EXPECT_FALSE(folded_flat(edge, edge.faces[0], edge.faces[1]));
+  const Mesh apart = make_mesh({kO, kX2, kY2, {0.1, 0.1, 0}, {0.1, 1, 0}, {1, 0.1, 0}}, {{0, 1, 2}, {3, 4, 5}});
+  EXPECT_FALSE(folded_flat(apart, apart.faces[0], apart.faces[1]));
 }
 
 TEST(TrianglePair, NoSharedIndex) {

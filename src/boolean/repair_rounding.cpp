@@ -106,6 +106,7 @@ class Repairer {
       if (mark[t[0]] || mark[t[1]] || mark[t[2]]) indexed_.push_back(f);
     }
     for (std::uint32_t f : indexed_) editable_.index(f);
+    editor_.count_flat_folds(options.flat_folds);
   }
 
   RepairOutcome run(const std::vector<std::uint8_t>& rounded) {
@@ -296,7 +297,9 @@ class Repairer {
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     for (std::uint32_t g : ring)
-      if (g != f && editor_.alive(g) && relation(t, m_.faces[g]) == geometry::TrianglePairRelation::intersecting)
+      if (g != f && editor_.alive(g) &&
+          (relation(t, m_.faces[g]) == geometry::TrianglePairRelation::intersecting ||
+           (options_.flat_folds && geometry::folded_flat(m_, t, m_.faces[g]))))
         return true;
     return false;
   }

@@ -46,6 +46,13 @@ struct RepairOptions {
   // once the result is valid, edges a rounding error long at a rounded point are
   // collapsed where that leaves no exact crossing around them.
   bool collapse_tiny_edges = false;
+  // two faces at a shared vertex that lie face to face (geometry::folded_flat) count as
+  // a crossing, in the fold test and in the counts that decide every edit: another
+  // rounding of a sliver's corner can land it exactly in the plane of the face across
+  // their common vertex, where the crossing test sees only a contact, and the next merge
+  // cuts both sheets along one line in overlapping segments that its split orders
+  // differently on the two operands (an exact result open between points 1e-31 apart).
+  bool flat_folds = false;
 };
 
 // `rounded[v]`: vertex v is a rounded intersection point (the only places rounding can

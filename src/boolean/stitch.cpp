@@ -270,7 +270,7 @@ StitchResult stitch_sub_faces(const Operands& ops, const Arrangement& arr, const
   // The result may feed a later merge (the pairwise surface method): the repair's options
   // for operands tilted by earlier roundings.
   r.repair = repair_rounding(r.mesh, r.face_operand, r.face_source, rounded, frozen,
-                             {.nudge_every_fold = true, .collapse_tiny_edges = true});
+                             {.nudge_every_fold = true, .collapse_tiny_edges = true, .flat_folds = true});
   if (keep_sheets_apart) {
     // Where the sheets may touch: on the points found so, and on the vertices that the
     // repair merged such a point into.

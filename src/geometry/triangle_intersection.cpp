@@ -235,4 +235,21 @@ TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& ti
   }
 }
 
+bool folded_flat(const Mesh& mesh, const Triangle& ti, const Triangle& tj) {
+  int shared = 0, k = 0, l = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (ti[i] == tj[j]) {
+        ++shared;
+        k = i;
+        l = j;
+      }
+  if (shared != 1) return false;
+  const auto& vs = mesh.vertices;
+  const Vec3 &v = vs[ti[k]], &a = vs[ti[(k + 1) % 3]], &b = vs[ti[(k + 2) % 3]];
+  const Vec3 &c = vs[tj[(l + 1) % 3]], &d = vs[tj[(l + 2) % 3]];
+  if (orient3d(v, a, b, c) != 0 || orient3d(v, a, b, d) != 0) return false;
+  return coplanar_interiors_overlap({v, a, b}, {v, c, d}) == CoplanarOverlap::opposite_facing;
+}
+
 }  // namespace molsurf::geometry

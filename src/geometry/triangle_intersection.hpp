@@ -78,4 +78,14 @@ TrianglePairRelation classify_triangle_pair(const Mesh& mesh, std::size_t face_i
 // of it: edits test their new faces before committing).
 TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& a, const Triangle& b);
 
+// Two faces with exactly one vertex index in common, coplanar, whose interiors overlap
+// with opposite normals: at that vertex the surface doubles back flat onto itself (a
+// sliver whose rounded corner landed exactly in its neighbour's plane). classify_triangle_pair
+// calls this a contact, as it must for two solids pressed face to face; the rounding
+// repair of a Boolean's result, whose sheets still share their touching points (the
+// stitch keeps them apart afterwards), counts it as a fold: a later Boolean on that
+// result meets the two sheets along overlapping segments and cannot stitch them apart.
+// Exact; both faces must be non-degenerate.
+bool folded_flat(const Mesh& mesh, const Triangle& a, const Triangle& b);
+
 }  // namespace molsurf::geometry

@@ -216,7 +216,8 @@ std::size_t MeshEditor::crossings_around(std::initializer_list<Index> centres) c
   for (std::size_t i = 0; i < faces.size(); ++i)
     for (std::size_t j = i + 1; j < faces.size(); ++j)
       if (alive(faces[i]) && alive(faces[j]) &&
-          crossing(geometry::classify_triangle_pair(m, m.faces[faces[i]], m.faces[faces[j]])))
+          (crossing(geometry::classify_triangle_pair(m, m.faces[faces[i]], m.faces[faces[j]])) ||
+           (count_flat_folds_ && geometry::folded_flat(m, m.faces[faces[i]], m.faces[faces[j]]))))
         ++count;
   return count;
 }

@@ -119,6 +119,10 @@ class MeshEditor {
   // Exactly: the crossing pairs among the listed faces around the given vertices and
   // around their neighbours (a count for edits that must leave fewer than there were).
   std::size_t crossings_around(std::initializer_list<Index> centres) const;
+  // Whether crossings_around also counts pairs that fold flat at a shared vertex
+  // (geometry::folded_flat): the rounding repair of a Boolean's result, whose folds a
+  // later Boolean on it would meet (off: the cleanup and the one-pass union).
+  void count_flat_folds(bool on) { count_flat_folds_ = on; }
 
   bool frozen(Index v) const { return !s_.frozen_.empty() && s_.frozen_[v]; }
   // Whether any of `vertices` is frozen; each time one is, a refusal is counted.
@@ -163,6 +167,7 @@ class MeshEditor {
   std::vector<Step> journal_;
   bool journaling_ = false;
   std::size_t refused_frozen_ = 0;
+  bool count_flat_folds_ = false;
   // Per face: the query of the crossing test that last saw it (each face is tested once).
   std::vector<std::uint32_t> seen_;
   std::uint32_t query_ = 0;
