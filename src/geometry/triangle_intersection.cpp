@@ -205,22 +205,41 @@ TrianglePairRelation classify_triangle_pair(const Mesh& mesh, std::size_t face_i
   return classify_triangle_pair(mesh, mesh.faces[face_i], mesh.faces[face_j]);
 }
 
-TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& ti, const Triangle& tj) {
-  // position_in_j[k]: where corner k of face i occurs in face j, or -1.
+namespace {
+
+// The vertex indices two faces share: position_in_j[k] is where corner k of face i occurs
+// in face j, or -1.
+struct SharedCorners {
   std::array<int, 3> position_in_j{-1, -1, -1};
-  int shared = 0;
+  int count = 0;
+  int first_shared() const {
+    int k = 0;
+    while (position_in_j[k] < 0) ++k;
+    return k;
+  }
+};
+
+SharedCorners shared_corners(const Triangle& ti, const Triangle& tj) {
+  SharedCorners s;
   for (int k = 0; k < 3; ++k)
     for (int l = 0; l < 3; ++l)
       if (ti[k] == tj[l]) {
-        position_in_j[k] = l;
-        ++shared;
+        s.position_in_j[k] = l;
+        ++s.count;
       }
+  return s;
+}
+
+}  // namespace
+
+TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& ti, const Triangle& tj) {
+  const SharedCorners shared = shared_corners(ti, tj);
+  const auto& position_in_j = shared.position_in_j;
   const auto& vs = mesh.vertices;
-  switch (shared) {
+  switch (shared.count) {
     case 0: return classify_disjoint_indices(corners(mesh, ti), corners(mesh, tj));
     case 1: {
-      int k = 0;
-      while (position_in_j[k] < 0) ++k;
+      const int k = shared.first_shared();
       const int l = position_in_j[k];
       return classify_shared_vertex(vs[ti[k]], vs[ti[(k + 1) % 3]], vs[ti[(k + 2) % 3]], vs[tj[(l + 1) % 3]],
                                     vs[tj[(l + 2) % 3]]);
@@ -236,15 +255,9 @@ TrianglePairRelation classify_triangle_pair(const Mesh& mesh, const Triangle& ti
 }
 
 bool folded_flat(const Mesh& mesh, const Triangle& ti, const Triangle& tj) {
-  int shared = 0, k = 0, l = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (ti[i] == tj[j]) {
-        ++shared;
-        k = i;
-        l = j;
-      }
-  if (shared != 1) return false;
+  const SharedCorners shared = shared_corners(ti, tj);
+  if (shared.count != 1) return false;
+  const int k = shared.first_shared(), l = shared.position_in_j[k];
   const auto& vs = mesh.vertices;
   const Vec3 &v = vs[ti[k]], &a = vs[ti[(k + 1) % 3]], &b = vs[ti[(k + 2) % 3]];
   const Vec3 &c = vs[tj[(l + 1) % 3]], &d = vs[tj[(l + 2) % 3]];
