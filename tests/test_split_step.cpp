@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <set>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -134,6 +135,35 @@ TEST(EarClipping, CutsAFaceAlongTracesThatCrossInside) {
   const auto triangles = triangulate_polylines(f, points);
   ASSERT_TRUE(triangles.has_value());
   expect_tiles_the_face(face, *triangles, used, f.constraints);
+}
+
+TEST(EarClipping, LeavesOutThePiecesNotWanted) {
+  // The one-pass union drops the pieces inside a neighbour before clipping them: here the
+  // piece at corner 0 (the rectangle 0, (3,0), (3,2), (0,2): area 6).
+  Face face;
+  std::vector<std::uint32_t> used;
+  const FaceToSplit f = crossing_traces(face, used);
+  std::vector<std::uint32_t> ids = f.boundary;
+  ids.insert(ids.end(), f.interior.begin(), f.interior.end());
+  const FacePoints points(ids, face.points, f.projection);
+  const auto all = triangulate_polylines(f, points);
+  ASSERT_TRUE(all.has_value());
+  int asked = 0;
+  PolylineWork work;
+  const auto wanted = triangulate_polylines(f, points, work, [&](std::span<const std::uint32_t> corners) {
+    ++asked;
+    return std::find(corners.begin(), corners.end(), 0u) == corners.end();
+  });
+  ASSERT_TRUE(wanted.has_value());
+  EXPECT_EQ(asked, 4);
+  double area = 0;
+  for (const auto& t : *wanted) {
+    EXPECT_EQ(std::count(t.begin(), t.end(), 0u), 0);
+    EXPECT_NE(std::find(all->begin(), all->end(), t), all->end()) << "not a triangle of the whole face's";
+    area += face.signed_area(t);
+  }
+  EXPECT_DOUBLE_EQ(area, 32.0 - 6.0);
+  EXPECT_EQ(wanted->size(), all->size() - 2);
 }
 
 TEST(AdvancingFront, TriangulatesWhatTheEarClippersLeave) {

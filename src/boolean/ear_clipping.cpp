@@ -124,9 +124,12 @@ namespace {
 // evaluated once, the ear clipping asking for the same triples again and again.
 class MemoisedOrientation {
  public:
-  // `lines`: bit k of a point's word says it is on collinear set k. `memo`: n^3 entries, all 2 (not known yet).
+  // `lines`: bit k of a point's word says it is on collinear set k. `memo`: one entry per
+  // set of three points (memo_size), all 2 (not known yet).
   MemoisedOrientation(const FacePoints& points, std::span<const std::uint64_t> lines, std::span<std::int8_t> memo)
-      : points_(points), lines_(lines), memo_(memo), n_(lines.size()) {}
+      : points_(points), lines_(lines), memo_(memo) {}
+
+  static std::size_t memo_size(std::size_t n) { return n * (n - 1) * (n - 2) / 6; }
 
   int operator()(int a, int b, int c) const {
     if (lines_[a] & lines_[b] & lines_[c]) return 0;
@@ -134,7 +137,10 @@ class MemoisedOrientation {
     if (a > b) std::swap(a, b), sign = -sign;
     if (b > c) std::swap(b, c), sign = -sign;
     if (a > b) std::swap(a, b), sign = -sign;
-    std::int8_t& known = memo_[(static_cast<std::size_t>(a) * n_ + b) * n_ + c];
+    if (a == b || b == c) return 0;
+    // The rank of {a < b < c} among all sets of three (combinatorial number system).
+    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b), uc = static_cast<std::size_t>(c);
+    std::int8_t& known = memo_[ua + ub * (ub - 1) / 2 + uc * (uc - 1) * (uc - 2) / 6];
     if (known == 2) known = static_cast<std::int8_t>(points_.orient(a, b, c));
     return sign * known;
   }
@@ -143,7 +149,6 @@ class MemoisedOrientation {
   const FacePoints& points_;
   std::span<const std::uint64_t> lines_;
   std::span<std::int8_t> memo_;
-  std::size_t n_;
 };
 
 // Local indices: the boundary points are 0 .. m-1 in order (FacePoints keeps the order);
@@ -402,13 +407,14 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
 
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
                                                                                 const FacePoints& points,
-                                                                                PolylineWork& work) {
+                                                                                PolylineWork& work,
+                                                                                const PieceWanted& wanted) {
   const int n = static_cast<int>(points.ids().size());
   const int m = static_cast<int>(face.boundary.size());
   if (n > 64) return std::nullopt;
   number_boundary(face, points, work);
   mark_collinear_sets(face, points, work);
-  work.memo.assign(static_cast<std::size_t>(n) * n * n, 2);
+  work.memo.assign(MemoisedOrientation::memo_size(static_cast<std::size_t>(n)), 2);
   const MemoisedOrientation orient(points, work.lines, work.memo);
 
   if (!connect_boundary_and_constraints(face, points, work)) return std::nullopt;
@@ -416,12 +422,22 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(c
   const std::optional<std::size_t> piece_count = walk_pieces(n, m, work);
   if (!piece_count) return std::nullopt;
 
+  // A triangulation of the face with all its points has m + 2 (n - m) - 2 triangles; a
+  // piece of k corners, clipped, gives k - 2.
+  int triangle_count = 0;
+  for (std::size_t piece = 0; piece < *piece_count; ++piece)
+    triangle_count += static_cast<int>(work.pieces[piece].size()) - 2;
+  if (triangle_count != m + 2 * (n - m) - 2) return std::nullopt;
   project_points(face, points, work);
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  for (std::size_t piece = 0; piece < *piece_count; ++piece)
+  for (std::size_t piece = 0; piece < *piece_count; ++piece) {
+    if (wanted) {
+      work.piece_ids.clear();
+      for (int local : work.pieces[piece]) work.piece_ids.push_back(points.ids()[local]);
+      if (!wanted(work.piece_ids)) continue;
+    }
     if (!clip_piece(work.pieces[piece], orient, points.ids(), work, triangles)) return std::nullopt;
-  // A triangulation of the face with all its points: m + 2 (n - m) - 2 triangles.
-  if (static_cast<int>(triangles.size()) != m + 2 * (n - m) - 2) return std::nullopt;
+  }
   return triangles;
 }
 

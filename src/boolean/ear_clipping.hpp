@@ -4,6 +4,7 @@
 // caller falls back to the advancing front (advancing_front.hpp).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <utility>
@@ -53,9 +54,16 @@ struct PolylineWork {
   std::vector<std::array<double, 4>> box;
   std::vector<int> prev, next;
   std::vector<double> score;
+  std::vector<std::uint32_t> piece_ids;
 };
+// Asked of each piece before it is clipped, with the point ids of its corners in order:
+// false leaves the piece out of the result untriangulated (the one-pass union drops the
+// pieces that lie inside a neighbour). Empty: every piece is wanted. Whether the pieces
+// make a whole triangulation is checked on all of them either way.
+using PieceWanted = std::function<bool(std::span<const std::uint32_t> corner_ids)>;
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_polylines(const FaceToSplit& face,
                                                                                 const FacePoints& points,
-                                                                                PolylineWork& work);
+                                                                                PolylineWork& work,
+                                                                                const PieceWanted& wanted = {});
 
 }  // namespace molsurf::boolean_engine

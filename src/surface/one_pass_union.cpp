@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <span>
@@ -590,8 +591,31 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
         return true;
     return false;
   };
+  // Classify (§2.4): a piece lies wholly inside or wholly outside each neighbour (no trace
+  // crosses it), and inside a convex polyhedron iff all its corners are.
+  auto& inside = w.inside;
+  inside.assign(w.points.size() * w.relevant.size(), -1);
+  auto corner_inside = [&](std::uint32_t p, std::size_t r) {
+    std::int8_t& known = inside[p * w.relevant.size() + r];
+    if (known < 0) {
+      const std::uint32_t ni = w.relevant[r];
+      const auto& on = w.on_neighbour[p];
+      known = std::find(on.begin(), on.end(), ni) != on.end() ? 1 : inside_closed(w.points[p], nbr_[ni]);
+    }
+    return known == 1;
+  };
+  auto outside_all = [&](std::span<const std::uint32_t> corners) {
+    for (std::size_t r = 0; r < w.relevant.size(); ++r) {
+      const std::uint32_t ni = w.relevant[r];
+      if (w.plane_kind[ni] == Plane::coplanar_same && nbr_[ni].atom > atom_) continue;
+      if (std::all_of(corners.begin(), corners.end(), [&](std::uint32_t p) { return corner_inside(p, r); }))
+        return false;
+    }
+    return true;
+  };
   auto& triangles = w.triangles;
   triangles.clear();
+  bool classified = false;  // triangles holds only the pieces outside every neighbour
   if (face.interior.empty()) {
     // Every trace runs from edge to edge: chords, which cannot cross (a crossing would be
     // a three-plane point in the interior) and hold no point inside them, so the face is
@@ -620,32 +644,17 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
     if (face.constraints.empty() && face.interior.empty() && face.boundary.size() == 3) {
       triangles.push_back({corner[0], corner[1], corner[2]});
     } else {
-      auto clipped = boolean_engine::triangulate_polylines(face, points, w.polylines);
-      triangles = clipped ? std::move(*clipped) : boolean_engine::retriangulate_face(face, points);
+      // Pieces inside a neighbour are dropped before they are clipped.
+      if (auto clipped = boolean_engine::triangulate_polylines(face, points, w.polylines, std::ref(outside_all))) {
+        triangles = std::move(*clipped);
+        classified = true;
+      } else {
+        triangles = boolean_engine::retriangulate_face(face, points);
+      }
     }
   }
-  // Classify: a piece lies wholly inside or wholly outside each neighbour (no trace
-  // crosses it), and inside a convex polyhedron iff its three corners are.
-  auto& inside = w.inside;
-  inside.assign(w.points.size() * w.relevant.size(), -1);
-  auto corner_inside = [&](std::uint32_t p, std::size_t r) {
-    std::int8_t& known = inside[p * w.relevant.size() + r];
-    if (known < 0) {
-      const std::uint32_t ni = w.relevant[r];
-      const auto& on = w.on_neighbour[p];
-      known = std::find(on.begin(), on.end(), ni) != on.end() ? 1 : inside_closed(w.points[p], nbr_[ni]);
-    }
-    return known == 1;
-  };
-  for (const auto& tri : triangles) {
-    bool keep = true;
-    for (std::size_t r = 0; r < w.relevant.size() && keep; ++r) {
-      const std::uint32_t ni = w.relevant[r];
-      if (w.plane_kind[ni] == Plane::coplanar_same && nbr_[ni].atom > atom_) continue;
-      if (corner_inside(tri[0], r) && corner_inside(tri[1], r) && corner_inside(tri[2], r)) keep = false;
-    }
-    if (keep) emit(tri, out, table);
-  }
+  for (const auto& tri : triangles)
+    if (classified || outside_all(tri)) emit(tri, out, table);
 }
 
 AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
