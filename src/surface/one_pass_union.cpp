@@ -79,6 +79,19 @@ struct Neighbour {
   }
 };
 
+// The closed box meets the closed ball: a face that misses a neighbour's circumscribed
+// ball is outside its polyhedron. The radius is widened far beyond the rounding of the
+// distance (relative to the coordinates' size).
+bool box_meets_ball(const BoundingBox& b, const Vec3& c, double r) {
+  double d2 = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double x = c[axis], e = x < b.min[axis] ? b.min[axis] - x : (x > b.max[axis] ? x - b.max[axis] : 0.0);
+    d2 += e * e;
+  }
+  const double reach = r + 1e-9 * (r + std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}));
+  return d2 <= reach * reach;
+}
+
 // x in the closed cone from the centre o over the triangle (a, b, c), counter-clockwise
 // seen from outside: o lies strictly inside, so for x in the triangle's plane this is x
 // in the closed triangle.
@@ -183,6 +196,10 @@ struct FaceWork {
   std::vector<std::int8_t> inside;
   boolean_engine::FaceToSplit face;
   boolean_engine::PolylineWork polylines;
+  // The points on the trimmed atom's own edges, built once: each edge is shared by two of
+  // its faces, which meet the same neighbour faces there. Emptied per atom.
+  std::uint32_t atom = 0;
+  std::unordered_map<PointDefinition, ImplicitPoint, DefinitionHash> own_edge_points;
 
   void clear() {
     points.clear();
@@ -192,6 +209,12 @@ struct FaceWork {
     segments.clear();
     near.clear();
     relevant.clear();
+  }
+
+  ImplicitPoint constructed(const PointDefinition& d, const AtomPolyhedra& polyhedra) {
+    if (d.kind != PointDefinition::Kind::line_plane || d.id[0] != atom) return construct(d, polyhedra);
+    if (const auto it = own_edge_points.find(d); it != own_edge_points.end()) return it->second;
+    return own_edge_points.emplace(d, construct(d, polyhedra)).first->second;
   }
 
   // The id of the point d defines, merged with an equal point already there.
@@ -205,7 +228,7 @@ struct FaceWork {
     };
     for (std::uint32_t k = 0; k < points.size(); ++k)
       if (definitions[k] == d) return merge(k);
-    const ImplicitPoint x = construct(d, polyhedra);
+    const ImplicitPoint x = constructed(d, polyhedra);
     for (std::uint32_t k = 0; k < points.size(); ++k)
       if (geometry::same_point(points[k], x)) return merge(k);
     points.push_back(x);
@@ -342,6 +365,23 @@ void AtomTrimmer::find_lens(Neighbour& n) const {
     return dist2 > (outer + r) * (outer + r) || (r < inner && dist2 < (inner - r) * (inner - r));
   };
   const PolyhedronTemplate& shape = *n.shape;
+  // Then on the face's corners: all three inside the inscribed ball put the face inside it
+  // (convexity); a point of a face is no nearer the centre than the square root of its
+  // corners' least squared distance less a third of its longest edge squared (the
+  // barycentric identity |x - o|^2 = sum l_i |v_i - o|^2 - sum_{i<j} l_i l_j |v_i - v_j|^2).
+  const double below = std::max(0.0, inner - 2 * error), below2 = below * below;
+  const double edge = shape.max_edge * n.scale, beyond = outer + 2 * error;
+  const double beyond2 = (beyond * beyond + edge * edge / 3) * (1 + 1e-12);
+  auto misses_shell_by_corners = [&](const std::array<Vec3, 3>& t) {
+    double least = std::numeric_limits<double>::infinity(), most = 0;
+    for (const Vec3& v : t) {
+      const Vec3 d = v - centre_;
+      const double d2 = dot(d, d);
+      least = std::min(least, d2);
+      most = std::max(most, d2);
+    }
+    return most < below2 * (1 - 1e-12) || least > beyond2;
+  };
   const auto block_faces = static_cast<std::uint32_t>(shape.frequency * shape.frequency);
   for (std::uint32_t b = 0; b < 20; ++b) {
     if (misses_shell(shape.block_centre[b], shape.block_radius[b])) continue;
@@ -350,6 +390,7 @@ void AtomTrimmer::find_lens(Neighbour& n) const {
     for (std::uint32_t g = b * block_faces; g < (b + 1) * block_faces; ++g) {
       if (misses_shell(shape.face_centre[g], shape.face_radius[g])) continue;
       const auto t = n.face(g);
+      if (misses_shell_by_corners(t)) continue;
       n.lens.push_back(g);
       n.lens_boxes.push_back(box_of(t[0], t[1], t[2]));
       group.extend(n.lens_boxes.back());
@@ -661,6 +702,8 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   AtomPieces out;
   if (polyhedra_.duplicate(atom)) return out;
   atom_ = atom;
+  work_.atom = atom;
+  work_.own_edge_points.clear();
   centre_ = polyhedra_.centre(atom);
   polyhedra_.vertices(atom, vertices_);
   load_neighbours(atom);
@@ -696,7 +739,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       if (ni != ~0u && deep_inside(nbr_[ni])) dropped = true;
     }
     for (std::uint32_t ni = 0; ni < nbr_count_ && !dropped; ++ni) {
-      if (!f_box_.overlaps(nbr_[ni].box)) continue;
+      if (!f_box_.overlaps(nbr_[ni].box) || !box_meets_ball(f_box_, nbr_[ni].centre, nbr_[ni].circumradius)) continue;
       if (deep_inside(nbr_[ni])) {
         dropped = true;
       } else {
