@@ -116,6 +116,45 @@ TEST(Predicates, Orient3dNearlyCoplanarUlpGrid) {
   EXPECT_GT(naive_wrong, 0);
 }
 
+// A small patch far from the origin (a surface's neighbouring faces): the differences of
+// its points are doubles, which the exact path takes without the general expansion
+// product; near the origin, with coordinates of both signs, they are not.
+TEST(Predicates, Orient3dNearlyCoplanarCloseTogether) {
+  for (const Vec3 origin : {Vec3{21.5, -33.25, 47.0}, Vec3{0.0, 0.0, 0.0}}) {
+    const Vec3 a = origin + Vec3{0.1, 0.2, 0.3}, b = origin + Vec3{1.3, -0.7, 0.4},
+               c = origin + Vec3{-0.6, 0.9, 1.1};
+    int zeros = 0, positive = 0, negative = 0;
+    for (int i = 0; i <= 40; ++i) {
+      const double s = 0.025 * i, t = 1 - 0.02 * i;
+      Vec3 d = a + s * (b - a) + t * (c - a);  // rounded: on the plane or ulps off it
+      for (int k = -3; k <= 3; ++k) {
+        Vec3 e = d;
+        for (int step = 0; step < std::abs(k); ++step) e.z = std::nextafter(e.z, k < 0 ? -1e9 : 1e9);
+        const int exact = reference_orient3d(a, b, c, e);
+        ASSERT_EQ(orient3d(a, b, c, e), exact) << i << ' ' << k;
+        (exact == 0 ? zeros : exact > 0 ? positive : negative)++;
+      }
+    }
+    EXPECT_GT(positive, 0);
+    EXPECT_GT(negative, 0);
+  }
+  // Exactly coplanar on a dyadic grid (every value representable), then an ulp off.
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> step(-64, 64);
+  auto grid_point = [&] { return Vec3{20 + step(rng) / 64.0, 30 + step(rng) / 64.0, 40 + step(rng) / 64.0}; };
+  int zeros = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 a = grid_point(), b = grid_point(), c = grid_point();
+    const double s = step(rng) / 128.0, t = step(rng) / 128.0;
+    Vec3 d = a + s * (b - a) + t * (c - a);
+    if (trial % 2) d.y = std::nextafter(d.y, trial % 4 == 1 ? 1e9 : -1e9);
+    const int exact = reference_orient3d(a, b, c, d);
+    ASSERT_EQ(orient3d(a, b, c, d), exact) << trial;
+    zeros += exact == 0;
+  }
+  EXPECT_GT(zeros, 500);
+}
+
 // Offsets of 1e-17 relative: below an ulp for some coordinates, representable for others.
 TEST(Predicates, TinyRelativeOffsets) {
   const Vec3 a{1, 1, 1}, b{2, 3, 5}, c{-3, 4, 2};

@@ -193,12 +193,13 @@ bool fits_expansion_range(std::span<const double> values, int degree) {
   // largest part is below 2^(degree * (highest + 1) + a few bits for the sums).
   const int lowest_allowed = -1074 / degree;
   const int highest_allowed = 960 / degree - 2;  // room for the splitting factor 2^27
+  // |v| in [2^(e-1), 2^e) has ulp 2^(e-53): e - 53 >= lowest_allowed and e <= highest_allowed
+  // say |v| >= 2^(lowest_allowed + 52) and |v| < 2^highest_allowed (NaN and infinities fail).
+  const double smallest = std::ldexp(1.0, lowest_allowed + 52), beyond = std::ldexp(1.0, highest_allowed);
   for (const double v : values) {
     if (v == 0) continue;
-    if (!std::isfinite(v)) return false;
-    int exponent = 0;
-    std::frexp(v, &exponent);  // |v| in [2^(exponent-1), 2^exponent); ulp 2^(exponent-53)
-    if (exponent - 53 < lowest_allowed || exponent > highest_allowed) return false;
+    const double magnitude = std::fabs(v);
+    if (!(magnitude >= smallest && magnitude < beyond)) return false;
   }
   return true;
 }

@@ -10,8 +10,10 @@
 #include "geometry/exact_integers.hpp"
 #include "geometry/expansion.hpp"
 
+#include <array>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 
 namespace molsurf::geometry::predicates_detail {
 
@@ -43,10 +45,126 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
   return sgn(det);
 }
 
+namespace {
+
+// Error-free transformations (Shewchuk 1997), on plain doubles.
+inline void two_sum(double a, double b, double& s, double& err) {
+  s = a + b;
+  const double b_virtual = s - a;
+  err = (a - (s - b_virtual)) + (b - b_virtual);
+}
+inline void split(double a, double& hi, double& lo) {
+  const double c = 134217729.0 * a;  // 2^27 + 1
+  hi = c - (c - a);
+  lo = a - hi;
+}
+inline void two_product(double a, double b, double& p, double& err) {
+  p = a * b;
+  double a_hi = 0, a_lo = 0, b_hi = 0, b_lo = 0;
+  split(a, a_hi, a_lo);
+  split(b, b_hi, b_lo);
+  err = a_lo * b_lo - (((p - a_hi * b_hi) - a_lo * b_hi) - a_hi * b_lo);
+}
+
+// Expansions in fixed arrays: parts nonoverlapping, increasing in magnitude, no zeros.
+template <std::size_t N>
+struct Parts {
+  std::array<double, N> v;
+  int n = 0;
+  void push(double x) {
+    if (x != 0) v[n++] = x;
+  }
+};
+
+// a b - c d exactly: at most four parts.
+Parts<4> product_difference(double a, double b, double c, double d) {
+  double p = 0, pe = 0, q = 0, qe = 0;
+  two_product(a, b, p, pe);
+  two_product(-c, d, q, qe);
+  // Grow-expansion of (pe, p) by qe, then by q (Shewchuk's Two_Two_Sum).
+  double s0 = 0, e0 = 0, s1 = 0, e1 = 0, s2 = 0, e2 = 0, s3 = 0, e3 = 0;
+  two_sum(pe, qe, s0, e0);    // e0 smallest
+  two_sum(p, s0, s1, e1);
+  two_sum(e1, q, s2, e2);
+  two_sum(s1, s2, s3, e3);
+  Parts<4> out;
+  out.push(e0);
+  out.push(e2);
+  out.push(e3);
+  out.push(s3);
+  return out;
+}
+
+// e * b exactly (Scale-Expansion with zero elimination).
+template <std::size_t N>
+Parts<2 * N> scale_parts(const Parts<N>& e, double b) {
+  Parts<2 * N> h;
+  if (e.n == 0 || b == 0) return h;
+  double q = 0, err = 0;
+  two_product(e.v[0], b, q, err);
+  h.push(err);
+  for (int i = 1; i < e.n; ++i) {
+    double high = 0, low = 0, sum = 0;
+    two_product(e.v[i], b, high, low);
+    two_sum(q, low, sum, err);
+    h.push(err);
+    q = high + sum;  // Fast-Two-Sum: |high| >= |sum|
+    h.push(sum - (q - high));
+  }
+  h.push(q);
+  return h;
+}
+
+// e + f exactly (Fast-Expansion-Sum with zero elimination, Shewchuk's merge then sweep).
+template <std::size_t N, std::size_t M>
+Parts<N + M> sum_parts(const Parts<N>& e, const Parts<M>& f) {
+  std::array<double, N + M> merged;
+  int m = 0, i = 0, j = 0;
+  while (i < e.n && j < f.n) merged[m++] = std::fabs(f.v[j]) > std::fabs(e.v[i]) ? e.v[i++] : f.v[j++];
+  while (i < e.n) merged[m++] = e.v[i++];
+  while (j < f.n) merged[m++] = f.v[j++];
+  Parts<N + M> h;
+  if (m == 0) return h;
+  double q = merged[0];
+  for (int k = 1; k < m; ++k) {
+    double s = 0, err = 0;
+    two_sum(q, merged[k], s, err);
+    h.push(err);
+    q = s;
+  }
+  h.push(q);
+  return h;
+}
+
+// The common near-degenerate case: points close together, whose nine differences are
+// doubles (no rounding: Sterbenz). The determinant w . (u x v) is then three cross terms,
+// each a difference of two exact products (four parts), scaled by a double and summed: at
+// most 24 parts in fixed arrays. Nothing when a difference is not a double.
+std::optional<int> orient3d_of_exact_differences(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  std::array<double, 9> diff;
+  const std::array<double, 9> hi{b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+  const std::array<double, 3> lo{a.x, a.y, a.z};
+  for (int k = 0; k < 9; ++k) {
+    double s = 0, err = 0;
+    two_sum(hi[k], -lo[k % 3], s, err);
+    if (err != 0) return std::nullopt;
+    diff[k] = s;
+  }
+  const double ux = diff[0], uy = diff[1], uz = diff[2], vx = diff[3], vy = diff[4], vz = diff[5];
+  const Parts<24> det = sum_parts(sum_parts(scale_parts(product_difference(uy, vz, uz, vy), diff[6]),
+                                            scale_parts(product_difference(uz, vx, ux, vz), diff[7])),
+                                  scale_parts(product_difference(ux, vy, uy, vx), diff[8]));
+  if (det.n == 0) return 0;
+  return det.v[det.n - 1] > 0 ? 1 : -1;
+}
+
+}  // namespace
+
 int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   if (!all_finite({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})) return 0;
   const double values[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
   if (fits_expansion_range(values, 3)) {
+    if (const auto sign = orient3d_of_exact_differences(a, b, c, d)) return *sign;
     const Expansion det = det3(difference(b, a), difference(c, a), difference(d, a));
     if (det.valid()) return det.sign();
   }
