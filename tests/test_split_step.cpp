@@ -125,32 +125,37 @@ FaceToSplit crossing_traces(Face& face, std::vector<std::uint32_t>& used) {
   return f;
 }
 
-TEST(EarClipping, CutsAFaceAlongTracesThatCrossInside) {
-  Face face;
-  std::vector<std::uint32_t> used;
-  const FaceToSplit f = crossing_traces(face, used);
+std::vector<std::uint32_t> boundary_and_interior(const FaceToSplit& f) {
   std::vector<std::uint32_t> ids = f.boundary;
   ids.insert(ids.end(), f.interior.begin(), f.interior.end());
-  const FacePoints points(ids, face.points, f.projection);
-  const auto triangles = triangulate_polylines(f, points);
+  return ids;
+}
+
+// The face of crossing_traces with its points, as the ear clippers take them (not
+// copied: `points` refers to `face`).
+struct CrossingFace {
+  Face face;
+  std::vector<std::uint32_t> used;
+  FaceToSplit f = crossing_traces(face, used);
+  FacePoints points{boundary_and_interior(f), face.points, f.projection};
+};
+
+TEST(EarClipping, CutsAFaceAlongTracesThatCrossInside) {
+  const CrossingFace c;
+  const auto triangles = triangulate_polylines(c.f, c.points);
   ASSERT_TRUE(triangles.has_value());
-  expect_tiles_the_face(face, *triangles, used, f.constraints);
+  expect_tiles_the_face(c.face, *triangles, c.used, c.f.constraints);
 }
 
 TEST(EarClipping, LeavesOutThePiecesNotWanted) {
   // The one-pass union drops the pieces inside a neighbour before clipping them: here the
   // piece at corner 0 (the rectangle 0, (3,0), (3,2), (0,2): area 6).
-  Face face;
-  std::vector<std::uint32_t> used;
-  const FaceToSplit f = crossing_traces(face, used);
-  std::vector<std::uint32_t> ids = f.boundary;
-  ids.insert(ids.end(), f.interior.begin(), f.interior.end());
-  const FacePoints points(ids, face.points, f.projection);
-  const auto all = triangulate_polylines(f, points);
+  const CrossingFace c;
+  const auto all = triangulate_polylines(c.f, c.points);
   ASSERT_TRUE(all.has_value());
   int asked = 0;
   PolylineWork work;
-  const auto wanted = triangulate_polylines(f, points, work, [&](std::span<const std::uint32_t> corners) {
+  const auto wanted = triangulate_polylines(c.f, c.points, work, [&](std::span<const std::uint32_t> corners) {
     ++asked;
     return std::find(corners.begin(), corners.end(), 0u) == corners.end();
   });
@@ -160,7 +165,7 @@ TEST(EarClipping, LeavesOutThePiecesNotWanted) {
   for (const auto& t : *wanted) {
     EXPECT_EQ(std::count(t.begin(), t.end(), 0u), 0);
     EXPECT_NE(std::find(all->begin(), all->end(), t), all->end()) << "not a triangle of the whole face's";
-    area += face.signed_area(t);
+    area += c.face.signed_area(t);
   }
   EXPECT_DOUBLE_EQ(area, 32.0 - 6.0);
   EXPECT_EQ(wanted->size(), all->size() - 2);
@@ -175,9 +180,7 @@ TEST(AdvancingFront, TriangulatesWhatTheEarClippersLeave) {
   const std::uint32_t loose = face.add({1, 5, 0});
   f.interior.push_back(loose);
   used.push_back(loose);
-  std::vector<std::uint32_t> ids = f.boundary;
-  ids.insert(ids.end(), f.interior.begin(), f.interior.end());
-  const FacePoints points(ids, face.points, f.projection);
+  const FacePoints points(boundary_and_interior(f), face.points, f.projection);
   EXPECT_FALSE(triangulate_polylines(f, points).has_value());
   const Triangles triangles = retriangulate_face(f, points);
   expect_tiles_the_face(face, triangles, used, f.constraints);

@@ -20,6 +20,47 @@
 
 namespace molsurf::geometry {
 
+// Error-free transformations (Dekker; Shewchuk 1997), the steps every expansion operation
+// is made of.
+namespace expansion_detail {
+
+// s + err == a + b exactly, s = fl(a + b).
+inline void two_sum(double a, double b, double& s, double& err) {
+  s = a + b;
+  const double b_virtual = s - a;
+  const double a_virtual = s - b_virtual;
+  err = (a - a_virtual) + (b - b_virtual);
+}
+
+// The same when |a| >= |b| (or a == 0).
+inline void fast_two_sum(double a, double b, double& s, double& err) {
+  s = a + b;
+  err = b - (s - a);
+}
+
+// hi + lo == a, each with at most 26 significant bits (Veltkamp).
+inline void split(double a, double& hi, double& lo) {
+  const double c = 134217729.0 * a;  // 2^27 + 1
+  const double big = c - a;
+  hi = c - big;
+  lo = a - hi;
+}
+
+// p + err == a * b exactly (no underflow or overflow), p = fl(a * b). Dekker's product
+// rather than std::fma: without -mfma that is a library call per product.
+inline void two_product(double a, double b, double& p, double& err) {
+  p = a * b;
+  double a_hi = 0, a_lo = 0, b_hi = 0, b_lo = 0;
+  split(a, a_hi, a_lo);
+  split(b, b_hi, b_lo);
+  const double err1 = p - a_hi * b_hi;
+  const double err2 = err1 - a_lo * b_hi;
+  const double err3 = err2 - a_hi * b_lo;
+  err = a_lo * b_lo - err3;
+}
+
+}  // namespace expansion_detail
+
 class Expansion {
  public:
   static constexpr int kCapacity = 32;

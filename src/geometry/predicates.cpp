@@ -47,24 +47,9 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
 
 namespace {
 
-// Error-free transformations (Shewchuk 1997), on plain doubles.
-inline void two_sum(double a, double b, double& s, double& err) {
-  s = a + b;
-  const double b_virtual = s - a;
-  err = (a - (s - b_virtual)) + (b - b_virtual);
-}
-inline void split(double a, double& hi, double& lo) {
-  const double c = 134217729.0 * a;  // 2^27 + 1
-  hi = c - (c - a);
-  lo = a - hi;
-}
-inline void two_product(double a, double b, double& p, double& err) {
-  p = a * b;
-  double a_hi = 0, a_lo = 0, b_hi = 0, b_lo = 0;
-  split(a, a_hi, a_lo);
-  split(b, b_hi, b_lo);
-  err = a_lo * b_lo - (((p - a_hi * b_hi) - a_lo * b_hi) - a_hi * b_lo);
-}
+using expansion_detail::fast_two_sum;
+using expansion_detail::two_product;
+using expansion_detail::two_sum;
 
 // Expansions in fixed arrays: parts nonoverlapping, increasing in magnitude, no zeros.
 template <std::size_t N>
@@ -108,8 +93,8 @@ Parts<2 * N> scale_parts(const Parts<N>& e, double b) {
     two_product(e.v[i], b, high, low);
     two_sum(q, low, sum, err);
     h.push(err);
-    q = high + sum;  // Fast-Two-Sum: |high| >= |sum|
-    h.push(sum - (q - high));
+    fast_two_sum(high, sum, q, err);
+    h.push(err);
   }
   h.push(q);
   return h;
