@@ -11,6 +11,7 @@
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
+#include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/shapes.hpp"
 
@@ -355,6 +356,38 @@ TEST(MeshCheck, UnusedVerticesAndBadIndices) {
   EXPECT_TRUE(c.valid());
   m.faces.push_back({0, 1, 99});
   EXPECT_THROW(check_mesh(m), molsurf::Error);
+}
+
+// The check takes V - E + F from its own edge table when every face has three distinct
+// corners: the same number as euler_characteristic() on closed, open, non-manifold,
+// several-component meshes and with unused vertices; with a repeated corner, the
+// function's own count.
+TEST(MeshCheck, EulerCharacteristicAsTheMeshFunction) {
+  std::vector<Mesh> meshes;
+  meshes.push_back(cube());
+  Mesh two = tetrahedron();
+  for (const Vec3& v : cube({5, 0, 0}).vertices) two.vertices.push_back(v);
+  for (auto t : cube({5, 0, 0}).faces) two.faces.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+  meshes.push_back(two);
+  Mesh open = cube();
+  open.faces.pop_back();
+  meshes.push_back(open);
+  Mesh unused = tetrahedron();
+  unused.vertices.push_back({9, 9, 9});
+  meshes.push_back(unused);
+  Mesh fin = cube();
+  fin.vertices.push_back({0.5, 0.5, -1});
+  fin.faces.push_back({0, 1, 8});  // a third face on edge 0-1
+  meshes.push_back(fin);
+  Mesh repeated = cube();
+  repeated.faces.push_back({0, 0, 7});
+  meshes.push_back(repeated);
+  meshes.push_back(molsurf::make_icosphere({0, 0, 0}, 1.0, {.frequency = 3}));
+  for (std::size_t k = 0; k < meshes.size(); ++k)
+    EXPECT_EQ(check_mesh(meshes[k]).euler_characteristic, molsurf::euler_characteristic(meshes[k])) << k;
+  EXPECT_EQ(check_mesh(meshes[0]).euler_characteristic, 2);
+  EXPECT_EQ(check_mesh(meshes[1]).euler_characteristic, 4);
+  EXPECT_EQ(check_mesh(meshes[2]).euler_characteristic, 1);
 }
 
 TEST(MeshCheck, SelfIntersectionsCanBeSkipped) {
