@@ -297,10 +297,7 @@ class Repairer {
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     for (std::uint32_t g : ring)
-      if (g != f && editor_.alive(g) &&
-          (relation(t, m_.faces[g]) == geometry::TrianglePairRelation::intersecting ||
-           (options_.flat_folds && geometry::folded_flat(m_, t, m_.faces[g]))))
-        return true;
+      if (g != f && editor_.alive(g) && editor_.folds(t, m_.faces[g])) return true;
     return false;
   }
 

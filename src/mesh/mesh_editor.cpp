@@ -215,11 +215,13 @@ std::size_t MeshEditor::crossings_around(std::initializer_list<Index> centres) c
   std::size_t count = 0;
   for (std::size_t i = 0; i < faces.size(); ++i)
     for (std::size_t j = i + 1; j < faces.size(); ++j)
-      if (alive(faces[i]) && alive(faces[j]) &&
-          (crossing(geometry::classify_triangle_pair(m, m.faces[faces[i]], m.faces[faces[j]])) ||
-           (count_flat_folds_ && geometry::folded_flat(m, m.faces[faces[i]], m.faces[faces[j]]))))
-        ++count;
+      if (alive(faces[i]) && alive(faces[j]) && folds(m.faces[faces[i]], m.faces[faces[j]])) ++count;
   return count;
+}
+
+bool MeshEditor::folds(const Triangle& a, const Triangle& b) const {
+  return crossing(geometry::classify_triangle_pair(mesh(), a, b)) ||
+         (count_flat_folds_ && geometry::folded_flat(mesh(), a, b));
 }
 
 bool MeshEditor::touches_frozen(std::initializer_list<Index> vertices) {

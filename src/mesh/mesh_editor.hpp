@@ -123,6 +123,9 @@ class MeshEditor {
   // (geometry::folded_flat): the rounding repair of a Boolean's result, whose folds a
   // later Boolean on it would meet (off: the cleanup and the one-pass union).
   void count_flat_folds(bool on) { count_flat_folds_ = on; }
+  // Exactly: faces a and b cross, or (count_flat_folds) fold flat at a shared vertex: the
+  // pairs crossings_around counts.
+  bool folds(const Triangle& a, const Triangle& b) const;
 
   bool frozen(Index v) const { return !s_.frozen_.empty() && s_.frozen_[v]; }
   // Whether any of `vertices` is frozen; each time one is, a refusal is counted.
