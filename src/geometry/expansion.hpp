@@ -59,6 +59,114 @@ inline void two_product(double a, double b, double& p, double& err) {
   err = a_lo * b_lo - err3;
 }
 
+// Expansions in fixed arrays: parts nonoverlapping, increasing in magnitude, no zeros.
+template <std::size_t N>
+struct Parts {
+  std::array<double, N> v;
+  int n = 0;
+  void push(double x) {
+    if (x != 0) v[n++] = x;
+  }
+  int sign() const { return n == 0 ? 0 : (v[n - 1] > 0 ? 1 : -1); }
+};
+
+// a b - c d exactly: at most four parts.
+inline Parts<4> product_difference(double a, double b, double c, double d) {
+  double p = 0, pe = 0, q = 0, qe = 0;
+  two_product(a, b, p, pe);
+  two_product(-c, d, q, qe);
+  // Grow-expansion of (pe, p) by qe, then by q (Shewchuk's Two_Two_Sum).
+  double s0 = 0, e0 = 0, s1 = 0, e1 = 0, s2 = 0, e2 = 0, s3 = 0, e3 = 0;
+  two_sum(pe, qe, s0, e0);    // e0 smallest
+  two_sum(p, s0, s1, e1);
+  two_sum(e1, q, s2, e2);
+  two_sum(s1, s2, s3, e3);
+  Parts<4> out;
+  out.push(e0);
+  out.push(e2);
+  out.push(e3);
+  out.push(s3);
+  return out;
+}
+
+// e * b exactly (Scale-Expansion with zero elimination).
+template <std::size_t N>
+Parts<2 * N> scale_parts(const Parts<N>& e, double b) {
+  Parts<2 * N> h;
+  if (e.n == 0 || b == 0) return h;
+  double q = 0, err = 0;
+  two_product(e.v[0], b, q, err);
+  h.push(err);
+  for (int i = 1; i < e.n; ++i) {
+    double high = 0, low = 0, sum = 0;
+    two_product(e.v[i], b, high, low);
+    two_sum(q, low, sum, err);
+    h.push(err);
+    fast_two_sum(high, sum, q, err);
+    h.push(err);
+  }
+  h.push(q);
+  return h;
+}
+
+// e + f exactly (Fast-Expansion-Sum with zero elimination, Shewchuk's merge then sweep).
+template <std::size_t N, std::size_t M>
+Parts<N + M> sum_parts(const Parts<N>& e, const Parts<M>& f) {
+  std::array<double, N + M> merged;
+  int m = 0, i = 0, j = 0;
+  while (i < e.n && j < f.n) merged[m++] = std::fabs(f.v[j]) > std::fabs(e.v[i]) ? e.v[i++] : f.v[j++];
+  while (i < e.n) merged[m++] = e.v[i++];
+  while (j < f.n) merged[m++] = f.v[j++];
+  Parts<N + M> h;
+  if (m == 0) return h;
+  double q = merged[0];
+  for (int k = 1; k < m; ++k) {
+    double s = 0, err = 0;
+    two_sum(q, merged[k], s, err);
+    h.push(err);
+    q = s;
+  }
+  h.push(q);
+  return h;
+}
+
+// The same value in fewer parts, none adjacent (Shewchuk's Compress), in place in the
+// first n of v; returns the new count. Afterwards the largest part is within an ulp of
+// the value, and the two largest within about 2^-104 of it, relatively.
+template <std::size_t N>
+int compress(std::array<double, N>& v, int n) {
+  if (n < 2) return n;
+  std::array<double, N> g;
+  int bottom = n - 1;
+  double q = v[n - 1];
+  for (int i = n - 2; i >= 0; --i) {
+    double sum = 0, err = 0;
+    fast_two_sum(q, v[i], sum, err);
+    if (err != 0) {
+      g[bottom--] = sum;
+      q = err;
+    } else {
+      q = sum;
+    }
+  }
+  int top = 0;
+  for (int i = bottom + 1; i < n; ++i) {
+    double sum = 0, err = 0;
+    fast_two_sum(g[i], q, sum, err);
+    if (err != 0) v[top++] = err;
+    q = sum;
+  }
+  v[top++] = q;
+  while (top > 0 && v[top - 1] == 0) --top;
+  return top;
+}
+
+template <std::size_t N>
+Parts<N> compressed(Parts<N> e) {
+  e.n = compress(e.v, e.n);
+  return e;
+}
+
 }  // namespace expansion_detail
 
 class Expansion {

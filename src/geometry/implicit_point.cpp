@@ -3,12 +3,14 @@
 #include <cmath>
 
 #include "geometry/exact_integers.hpp"
+#include "geometry/expansion.hpp"
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
 #include <array>
 #include <optional>
 #include <climits>
+#include <limits>
 
 namespace molsurf::geometry {
 
@@ -108,6 +110,96 @@ Interval truncation_box(double r) {
   if (r > 0) return {r, interval_detail::up(r)};
   if (r < 0) return {interval_detail::down(r), r};
   return {interval_detail::down(0.0), interval_detail::up(0.0)};
+}
+
+// Double-double numbers (hi + lo, |lo| <= ulp(hi) / 2) for the filter of the rounding:
+// each operation is within a few units of 2^-104 of its exact result, relatively.
+struct DoubleDouble {
+  double hi = 0, lo = 0;
+};
+
+DoubleDouble normalized(double hi, double lo) {
+  DoubleDouble r;
+  expansion_detail::two_sum(hi, lo, r.hi, r.lo);
+  return r;
+}
+
+// The two largest parts of a compressed expansion.
+template <std::size_t N>
+DoubleDouble leading_parts(const expansion_detail::Parts<N>& e) {
+  if (e.n == 0) return {};
+  return normalized(e.v[e.n - 1], e.n >= 2 ? e.v[e.n - 2] : 0.0);
+}
+
+DoubleDouble times(const DoubleDouble& a, const DoubleDouble& b) {
+  double p = 0, e = 0;
+  expansion_detail::two_product(a.hi, b.hi, p, e);
+  return normalized(p, e + (a.hi * b.lo + a.lo * b.hi));
+}
+
+DoubleDouble divided(const DoubleDouble& a, const DoubleDouble& b) {
+  const double q1 = a.hi / b.hi;
+  double p = 0, e = 0;
+  expansion_detail::two_product(q1, b.hi, p, e);
+  const double remainder = (((a.hi - p) - e) + a.lo) - q1 * b.lo;
+  return normalized(q1, remainder / b.hi);
+}
+
+DoubleDouble plus(double a, const DoubleDouble& b) {
+  double s = 0, e = 0;
+  expansion_detail::two_sum(a, b.hi, s, e);
+  return normalized(s, e + b.lo);
+}
+
+// The crossing of line pq with plane abc truncated toward zero: P = p + t (q - p) with
+// t = dp / (dp - dq), dp = det[b-a, c-a, p-a] and dq the same for q, evaluated exactly in
+// fixed expansions and then in double-double. The truncation is read off that estimate
+// when it lies clearly inside one ulp; within 2^-80 of its size of a double (the exact
+// value may be that double: degenerate inputs) nothing is returned, and the integer form
+// decides. Nothing too when a difference of the defining doubles is not a double (far
+// apart, or on both sides of zero) or a value is out of the expansions' range.
+std::optional<Vec3> line_plane_truncated(const std::array<Vec3, 9>& def) {
+  using namespace expansion_detail;
+  if (!fits_expansion_range({&def[0].x, 15}, 5)) return std::nullopt;
+  const Vec3 &p = def[0], &q = def[1], &a = def[2];
+  std::array<double, 12> d;  // b - a, c - a, p - a, q - a
+  const std::array<const Vec3*, 4> from{&def[3], &def[4], &p, &q};
+  for (int k = 0; k < 12; ++k) {
+    double err = 0;
+    two_sum((*from[k / 3])[k % 3], -a[k % 3], d[k], err);
+    if (err != 0) return std::nullopt;
+  }
+  const double ux = d[0], uy = d[1], uz = d[2], vx = d[3], vy = d[4], vz = d[5];
+  const Parts<4> nx = product_difference(uy, vz, uz, vy), ny = product_difference(uz, vx, ux, vz),
+                 nz = product_difference(ux, vy, uy, vx);
+  auto along_normal = [&](double x, double y, double z) {
+    return sum_parts(sum_parts(scale_parts(nx, x), scale_parts(ny, y)), scale_parts(nz, z));
+  };
+  const Parts<24> dp = along_normal(d[6], d[7], d[8]), dq = along_normal(d[9], d[10], d[11]);
+  Parts<24> minus_dq = dq;
+  for (int i = 0; i < minus_dq.n; ++i) minus_dq.v[i] = -minus_dq.v[i];
+  const Parts<48> w = compressed(sum_parts(dp, minus_dq));
+  if (w.sign() == 0) return std::nullopt;  // outside the contract: the line lies in the plane
+  const DoubleDouble t = divided(leading_parts(compressed(dp)), leading_parts(w));
+  Vec3 out;
+  for (int axis = 0; axis < 3; ++axis) {
+    DoubleDouble step;
+    two_sum(q[axis], -p[axis], step.hi, step.lo);
+    const DoubleDouble x = plus(p[axis], times(t, step));
+    // Each operation errs by a few units of 2^-104 of its operands; 2^-80 is far beyond.
+    const double reach = 0x1p-80 * (std::fabs(p[axis]) + std::fabs(t.hi * step.hi));
+    if (!(std::fabs(x.hi) > 0x1p-900) || !(reach > 0x1p-1000)) return std::nullopt;
+    // x.hi + x.lo within `reach` of the exact value, |x.lo| <= ulp(x.hi) / 2.
+    const double toward_zero = x.hi > 0 ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+    const double lo_same_sign = x.hi > 0 ? x.lo : -x.lo;  // > 0: beyond x.hi, away from zero
+    if (lo_same_sign >= 2 * reach)
+      out[axis] = x.hi;
+    else if (lo_same_sign <= -2 * reach)
+      out[axis] = std::nextafter(x.hi, toward_zero);
+    else
+      return std::nullopt;
+  }
+  return out;
 }
 
 }  // namespace
@@ -251,6 +343,8 @@ int compare_homogeneous(const HomogeneousPoint& a, const HomogeneousPoint& b, in
 
 Vec3 ImplicitPoint::rounded() const {
   if (is_explicit()) return def_[0];
+  if (kind_ == Kind::line_plane)
+    if (const auto r = line_plane_truncated(def_)) return *r;
   // X / W from the integer form, as a quotient of about 64 bits (one truncating integer
   // division per coordinate: far cheaper than a canonical rational).
   const int exponent = common_exponent(defining_values());
