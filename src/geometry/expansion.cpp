@@ -81,7 +81,33 @@ Expansion Expansion::scaled(double b) const {
   return h;
 }
 
-void Expansion::compress() { size_ = expansion_detail::compress(parts_, size_); }
+// Shewchuk's Compress.
+void Expansion::compress() {
+  if (size_ < 2) return;
+  std::array<double, kCapacity> g;
+  int bottom = size_ - 1;
+  double q = parts_[size_ - 1];
+  for (int i = size_ - 2; i >= 0; --i) {
+    double sum = 0, err = 0;
+    fast_two_sum(q, parts_[i], sum, err);
+    if (err != 0) {
+      g[bottom--] = sum;
+      q = err;
+    } else {
+      q = sum;
+    }
+  }
+  int top = 0;
+  for (int i = bottom + 1; i < size_; ++i) {
+    double sum = 0, err = 0;
+    fast_two_sum(g[i], q, sum, err);
+    if (err != 0) parts_[top++] = err;
+    q = sum;
+  }
+  parts_[top++] = q;
+  size_ = top;
+  while (size_ > 0 && parts_[size_ - 1] == 0) --size_;
+}
 
 Expansion operator*(const Expansion& e, const Expansion& f) {
   if (!e.valid_ || !f.valid_) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geometry/double_double.hpp"
 #include "geometry/exact_integers.hpp"
 #include "geometry/expansion.hpp"
 #include "geometry/predicates.hpp"
@@ -112,90 +113,54 @@ Interval truncation_box(double r) {
   return {interval_detail::down(0.0), interval_detail::up(0.0)};
 }
 
-// Double-double numbers (hi + lo, |lo| <= ulp(hi) / 2) for the filter of the rounding:
-// each operation is within a few units of 2^-104 of its exact result, relatively.
-struct DoubleDouble {
-  double hi = 0, lo = 0;
-};
-
-DoubleDouble normalized(double hi, double lo) {
-  DoubleDouble r;
-  expansion_detail::two_sum(hi, lo, r.hi, r.lo);
-  return r;
-}
-
-// The two largest parts of a compressed expansion.
-template <std::size_t N>
-DoubleDouble leading_parts(const expansion_detail::Parts<N>& e) {
-  if (e.n == 0) return {};
-  return normalized(e.v[e.n - 1], e.n >= 2 ? e.v[e.n - 2] : 0.0);
-}
-
-DoubleDouble times(const DoubleDouble& a, const DoubleDouble& b) {
-  double p = 0, e = 0;
-  expansion_detail::two_product(a.hi, b.hi, p, e);
-  return normalized(p, e + (a.hi * b.lo + a.lo * b.hi));
-}
-
-DoubleDouble divided(const DoubleDouble& a, const DoubleDouble& b) {
-  const double q1 = a.hi / b.hi;
-  double p = 0, e = 0;
-  expansion_detail::two_product(q1, b.hi, p, e);
-  const double remainder = (((a.hi - p) - e) + a.lo) - q1 * b.lo;
-  return normalized(q1, remainder / b.hi);
-}
-
-DoubleDouble plus(double a, const DoubleDouble& b) {
-  double s = 0, e = 0;
-  expansion_detail::two_sum(a, b.hi, s, e);
-  return normalized(s, e + b.lo);
-}
-
-// The crossing of line pq with plane abc truncated toward zero: P = p + t (q - p) with
-// t = dp / (dp - dq), dp = det[b-a, c-a, p-a] and dq the same for q, evaluated exactly in
-// fixed expansions and then in double-double. The truncation is read off that estimate
-// when it lies clearly inside one ulp; within 2^-80 of its size of a double (the exact
-// value may be that double: degenerate inputs) nothing is returned, and the integer form
-// decides. Nothing too when a difference of the defining doubles is not a double (far
-// apart, or on both sides of zero) or a value is out of the expansions' range.
+// The crossing of line pq with plane abc truncated toward zero, from a double-double
+// estimate: P = p + t (q - p) with t = dp / (dp - dq), dp = det[b-a, c-a, p-a] and dq the
+// same for q. Every step errs by a few units of 2^-104 of the magnitudes it combines, so
+// the estimate is within 2^-99 of the sums of magnitudes below (the determinants'
+// permanents, and what t and the step add); `reach` is 2^19 times that. The truncation is
+// read off the estimate when that lies clearly inside one ulp; within `reach` of a double
+// (the exact value may be that double: degenerate inputs) nothing is returned, and the
+// integer form decides. Nothing too when a difference of the defining doubles is not a
+// double (far apart, or on both sides of zero), dp - dq nearly cancels, or a value is out
+// of the expansions' range.
 std::optional<Vec3> line_plane_truncated(const std::array<Vec3, 9>& def) {
-  using namespace expansion_detail;
   if (!fits_expansion_range({&def[0].x, 15}, 5)) return std::nullopt;
   const Vec3 &p = def[0], &q = def[1], &a = def[2];
   std::array<double, 12> d;  // b - a, c - a, p - a, q - a
   const std::array<const Vec3*, 4> from{&def[3], &def[4], &p, &q};
   for (int k = 0; k < 12; ++k) {
     double err = 0;
-    two_sum((*from[k / 3])[k % 3], -a[k % 3], d[k], err);
+    expansion_detail::two_sum((*from[k / 3])[k % 3], -a[k % 3], d[k], err);
     if (err != 0) return std::nullopt;
   }
   const double ux = d[0], uy = d[1], uz = d[2], vx = d[3], vy = d[4], vz = d[5];
-  const Parts<4> nx = product_difference(uy, vz, uz, vy), ny = product_difference(uz, vx, ux, vz),
-                 nz = product_difference(ux, vy, uy, vx);
-  auto along_normal = [&](double x, double y, double z) {
-    return sum_parts(sum_parts(scale_parts(nx, x), scale_parts(ny, y)), scale_parts(nz, z));
+  const std::array<DoubleDouble, 3> normal{product_difference_dd(uy, vz, uz, vy), product_difference_dd(uz, vx, ux, vz),
+                                           product_difference_dd(ux, vy, uy, vx)};
+  const std::array<double, 3> magnitude{std::fabs(uy * vz) + std::fabs(uz * vy), std::fabs(uz * vx) + std::fabs(ux * vz),
+                                        std::fabs(ux * vy) + std::fabs(uy * vx)};
+  auto along_normal = [&](const double* x) { return normal[0] * x[0] + normal[1] * x[1] + normal[2] * x[2]; };
+  auto permanent = [&](const double* x) {
+    return magnitude[0] * std::fabs(x[0]) + magnitude[1] * std::fabs(x[1]) + magnitude[2] * std::fabs(x[2]);
   };
-  const Parts<24> dp = along_normal(d[6], d[7], d[8]), dq = along_normal(d[9], d[10], d[11]);
-  Parts<24> minus_dq = dq;
-  for (int i = 0; i < minus_dq.n; ++i) minus_dq.v[i] = -minus_dq.v[i];
-  const Parts<48> w = compressed(sum_parts(dp, minus_dq));
-  if (w.sign() == 0) return std::nullopt;  // outside the contract: the line lies in the plane
-  const DoubleDouble t = divided(leading_parts(compressed(dp)), leading_parts(w));
+  const DoubleDouble dp = along_normal(&d[6]), w = dp - along_normal(&d[9]);
+  const double dp_permanent = permanent(&d[6]), all_permanent = dp_permanent + permanent(&d[9]);
+  if (!(std::fabs(w.hi) > 0x1p-40 * all_permanent)) return std::nullopt;
+  const DoubleDouble t = dp / w;
+  const double t_spread = (dp_permanent + std::fabs(t.hi) * all_permanent) / std::fabs(w.hi);
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
   Vec3 out;
   for (int axis = 0; axis < 3; ++axis) {
     DoubleDouble step;
-    two_sum(q[axis], -p[axis], step.hi, step.lo);
-    const DoubleDouble x = plus(p[axis], times(t, step));
-    // Each operation errs by a few units of 2^-104 of its operands; 2^-80 is far beyond.
-    const double reach = 0x1p-80 * (std::fabs(p[axis]) + std::fabs(t.hi * step.hi));
-    if (!(std::fabs(x.hi) > 0x1p-900) || !(reach > 0x1p-1000)) return std::nullopt;
-    // x.hi + x.lo within `reach` of the exact value, |x.lo| <= ulp(x.hi) / 2.
-    const double toward_zero = x.hi > 0 ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
-    const double lo_same_sign = x.hi > 0 ? x.lo : -x.lo;  // > 0: beyond x.hi, away from zero
-    if (lo_same_sign >= 2 * reach)
+    expansion_detail::two_sum(q[axis], -p[axis], step.hi, step.lo);
+    const DoubleDouble x = DoubleDouble{p[axis], 0} + t * step;
+    const double reach = 0x1p-80 * (std::fabs(p[axis]) + std::fabs(step.hi) * (std::fabs(t.hi) + t_spread));
+    if (!(std::fabs(x.hi) > 0x1p-900) || !(reach > 0x1p-1000) || !std::isfinite(reach)) return std::nullopt;
+    // The exact value lies within `reach` of x.hi + x.lo, and |x.lo| <= ulp(x.hi) / 2.
+    const double beyond = x.hi > 0 ? x.lo : -x.lo;  // > 0: away from zero past x.hi
+    if (beyond >= 2 * reach)
       out[axis] = x.hi;
-    else if (lo_same_sign <= -2 * reach)
-      out[axis] = std::nextafter(x.hi, toward_zero);
+    else if (beyond <= -2 * reach)
+      out[axis] = std::nextafter(x.hi, x.hi > 0 ? -kInfinity : kInfinity);
     else
       return std::nullopt;
   }

@@ -47,11 +47,79 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
 
 namespace {
 
-using expansion_detail::Parts;
-using expansion_detail::product_difference;
-using expansion_detail::scale_parts;
-using expansion_detail::sum_parts;
+using expansion_detail::fast_two_sum;
+using expansion_detail::two_product;
 using expansion_detail::two_sum;
+
+// Expansions in fixed arrays: parts nonoverlapping, increasing in magnitude, no zeros.
+template <std::size_t N>
+struct Parts {
+  std::array<double, N> v;
+  int n = 0;
+  void push(double x) {
+    if (x != 0) v[n++] = x;
+  }
+};
+
+// a b - c d exactly: at most four parts.
+Parts<4> product_difference(double a, double b, double c, double d) {
+  double p = 0, pe = 0, q = 0, qe = 0;
+  two_product(a, b, p, pe);
+  two_product(-c, d, q, qe);
+  // Grow-expansion of (pe, p) by qe, then by q (Shewchuk's Two_Two_Sum).
+  double s0 = 0, e0 = 0, s1 = 0, e1 = 0, s2 = 0, e2 = 0, s3 = 0, e3 = 0;
+  two_sum(pe, qe, s0, e0);    // e0 smallest
+  two_sum(p, s0, s1, e1);
+  two_sum(e1, q, s2, e2);
+  two_sum(s1, s2, s3, e3);
+  Parts<4> out;
+  out.push(e0);
+  out.push(e2);
+  out.push(e3);
+  out.push(s3);
+  return out;
+}
+
+// e * b exactly (Scale-Expansion with zero elimination).
+template <std::size_t N>
+Parts<2 * N> scale_parts(const Parts<N>& e, double b) {
+  Parts<2 * N> h;
+  if (e.n == 0 || b == 0) return h;
+  double q = 0, err = 0;
+  two_product(e.v[0], b, q, err);
+  h.push(err);
+  for (int i = 1; i < e.n; ++i) {
+    double high = 0, low = 0, sum = 0;
+    two_product(e.v[i], b, high, low);
+    two_sum(q, low, sum, err);
+    h.push(err);
+    fast_two_sum(high, sum, q, err);
+    h.push(err);
+  }
+  h.push(q);
+  return h;
+}
+
+// e + f exactly (Fast-Expansion-Sum with zero elimination, Shewchuk's merge then sweep).
+template <std::size_t N, std::size_t M>
+Parts<N + M> sum_parts(const Parts<N>& e, const Parts<M>& f) {
+  std::array<double, N + M> merged;
+  int m = 0, i = 0, j = 0;
+  while (i < e.n && j < f.n) merged[m++] = std::fabs(f.v[j]) > std::fabs(e.v[i]) ? e.v[i++] : f.v[j++];
+  while (i < e.n) merged[m++] = e.v[i++];
+  while (j < f.n) merged[m++] = f.v[j++];
+  Parts<N + M> h;
+  if (m == 0) return h;
+  double q = merged[0];
+  for (int k = 1; k < m; ++k) {
+    double s = 0, err = 0;
+    two_sum(q, merged[k], s, err);
+    h.push(err);
+    q = s;
+  }
+  h.push(q);
+  return h;
+}
 
 // The common near-degenerate case: points close together, whose nine differences are
 // doubles (no rounding: Sterbenz). The determinant w . (u x v) is then three cross terms,
