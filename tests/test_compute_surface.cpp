@@ -64,6 +64,11 @@ TEST(ComputeSurface, EqualsTheStagesRunOneByOneOnCrambin) {
   ASSERT_TRUE(r.cleanup.has_value());
   EXPECT_EQ(r.cleanup->collapses, cleanup.collapses);
   EXPECT_EQ(r.cleanup->flips, cleanup.flips);
+  // The cleanup's own measure of the cleaned surface is the check's (measured once).
+  EXPECT_EQ(r.cleanup->after.faces, cleanup.after.faces);
+  EXPECT_EQ(r.cleanup->after.min_angle_deg, cleanup.after.min_angle_deg);
+  EXPECT_EQ(r.cleanup->after.mean_min_angle_deg, cleanup.after.mean_min_angle_deg);
+  EXPECT_EQ(r.cleanup->after.below_5deg, cleanup.after.below_5deg);
   EXPECT_EQ(r.quality_before.below_5deg, cleanup.before.below_5deg);
   EXPECT_EQ(r.quality_after.min_angle_deg, check.quality.min_angle_deg);
   EXPECT_EQ(r.quality_after.below_5deg, check.quality.below_5deg);

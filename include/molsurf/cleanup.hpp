@@ -15,6 +15,9 @@ struct CleanupOptions {
   // rules allow), whatever their faces' angles: meshers' floating-point boundary recovery
   // takes the faces around them for overlapping. 0: no such pass.
   double min_edge_fraction = 0.02;
+  // False: CleanupStats::after is left empty, for a caller that measures the cleaned surface
+  // anyway (compute_surface's check does).
+  bool measure_after = true;
 };
 
 struct CleanupStats {

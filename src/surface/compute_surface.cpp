@@ -68,7 +68,10 @@ class Pipeline {
     if (options_.cleanup) {
       clock = std::chrono::steady_clock::now();
       report(SurfaceStage::cleanup, 0, 1);
-      attempt.cleanup = improve_surface(attempt.mesh, options_.cleanup_options);
+      // The check measures the cleaned surface's quality: not twice.
+      CleanupOptions cleanup_options = options_.cleanup_options;
+      cleanup_options.measure_after = false;
+      attempt.cleanup = improve_surface(attempt.mesh, cleanup_options);
       seconds_.cleanup += seconds_since(clock);
       report(SurfaceStage::cleanup, 1, 1);
     }
@@ -78,6 +81,7 @@ class Pipeline {
     MeshCheckOptions check_options;
     check_options.self_intersections = options_.check_self_intersections;
     attempt.check = check_mesh(attempt.mesh, check_options);
+    if (attempt.cleanup) attempt.cleanup->after = attempt.check.quality;
     seconds_.check += seconds_since(clock);
     report(SurfaceStage::check, 1, 1);
     return attempt;
