@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <set>
+#include <stdexcept>
 #include <span>
 #include <utility>
 #include <vector>
@@ -79,6 +80,21 @@ TEST(FacePoints, OrientsAndSortsExactlyOnACollinearRun) {
   EXPECT_EQ(ids, (std::vector<std::uint32_t>{q, m, r}));
   sort_along_segment(ids, face.at[1], face.at[0], face.points);  // the other way
   EXPECT_EQ(ids, (std::vector<std::uint32_t>{r, m, q}));
+}
+
+TEST(FacePoints, FindsTheLocalIndexOfCloseAndOfSpreadIds) {
+  Face face;
+  // Close ids (a table): in any order, repeated (the first place counts), missing ones refused.
+  const FacePoints close({5, 3, 7, 3}, face.points, face.projection());
+  EXPECT_EQ(close.local(5), 0);
+  EXPECT_EQ(close.local(3), 1);
+  EXPECT_EQ(close.local(7), 2);
+  for (const std::uint32_t missing : {0u, 2u, 4u, 6u, 8u, 1000u}) EXPECT_THROW(close.local(missing), std::out_of_range);
+  // Spread ids (a sorted list), as the pairwise engine's global ones.
+  const FacePoints spread({0, 1000000, 7, 1000000}, face.points, face.projection());
+  EXPECT_EQ(spread.local(1000000), 1);
+  EXPECT_EQ(spread.local(7), 2);
+  for (const std::uint32_t missing : {1u, 8u, 999999u, 1000001u}) EXPECT_THROW(spread.local(missing), std::out_of_range);
 }
 
 TEST(FacePoints, SplitsASegmentAtThePointsOnIt) {

@@ -52,15 +52,31 @@ FacePoints::FacePoints(std::vector<std::uint32_t> ids, std::span<const ImplicitP
       all_(all),
       projection_(projection),
       exponent_(INT_MAX) {
+  if (ids_.empty()) return;
+  const auto [lowest, highest] = std::minmax_element(ids_.begin(), ids_.end());
+  first_id_ = *lowest;
+  // Ids close together (the one-pass union numbers each face's points from 0): a table
+  // indexed by id; spread out (the pairwise engine's global ids): a sorted list.
+  if (*highest - *lowest < 4 * ids_.size() + 64) {
+    dense_.assign(*highest - *lowest + 1, -1);
+    for (int i = 0; i < static_cast<int>(ids_.size()); ++i)
+      if (int& slot = dense_[ids_[i] - first_id_]; slot < 0) slot = i;
+    return;
+  }
   local_.reserve(ids_.size());
   for (int i = 0; i < static_cast<int>(ids_.size()); ++i) local_.emplace_back(ids_[i], i);
   std::sort(local_.begin(), local_.end());
 }
 
 int FacePoints::local(std::uint32_t id) const {
-  const auto it = std::lower_bound(local_.begin(), local_.end(), std::pair<std::uint32_t, int>{id, INT_MIN});
-  if (it == local_.end() || it->first != id) throw std::out_of_range("boolean: a point that is not on this face");
-  return it->second;
+  if (!dense_.empty()) {
+    if (id >= first_id_ && id - first_id_ < dense_.size())
+      if (const int i = dense_[id - first_id_]; i >= 0) return i;
+  } else {
+    const auto it = std::lower_bound(local_.begin(), local_.end(), std::pair<std::uint32_t, int>{id, INT_MIN});
+    if (it != local_.end() && it->first == id) return it->second;
+  }
+  throw std::out_of_range("boolean: a point that is not on this face");
 }
 
 int FacePoints::exponent() const {

@@ -50,7 +50,11 @@ class FacePoints {
   std::vector<std::uint32_t> ids_;
   std::span<const geometry::ImplicitPoint> all_;
   Projection projection_;
-  std::vector<std::pair<std::uint32_t, int>> local_;  // (id, local index), sorted
+  // The local index of an id: dense_[id - first_id_] (-1: not on the face) when the ids
+  // lie close together, else found in local_, (id, local index) pairs sorted.
+  std::uint32_t first_id_ = 0;
+  std::vector<int> dense_;
+  std::vector<std::pair<std::uint32_t, int>> local_;
   mutable std::vector<std::optional<geometry::SmallHomogeneousPoint>> small_;
   mutable std::vector<std::optional<geometry::HomogeneousPoint>> exact_;
   mutable int exponent_;
