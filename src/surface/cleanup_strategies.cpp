@@ -5,6 +5,7 @@
 #include <array>
 #include <tuple>
 
+#include "common/parallel_threshold.hpp"
 #include "surface/cleanup_rules.hpp"
 #include "surface/cleanup_worker.hpp"
 
@@ -366,33 +367,57 @@ void Cleaner::move_candidates(Index v, std::vector<Option>& out) const {
 // angle it touches worse than it was or than the angle target; every other rule of an
 // edit holds (link condition, no face turned, budgets, the exact crossing test).
 std::vector<std::pair<double, std::array<Index, 2>>> Cleaner::short_edges(double floor) const {
+  // Each edge once, from the face that runs it upward; in parallel, squared lengths first
+  // (the root only below the floor's square, widened past its rounding), sorted after.
   std::vector<std::pair<double, std::array<Index, 2>>> out;
-  for (std::uint32_t f = 0; f < m_.faces.size(); ++f) {
-    if (!editor_.alive(f)) continue;
-    const Triangle& t = m_.faces[f];
-    for (int i = 0; i < 3; ++i) {
-      const Index a = t[i], b = t[(i + 1) % 3];
-      if (a > b) continue;  // each edge once, from the face that runs it upward
-      const double length = norm(m_.vertices[b] - m_.vertices[a]);
-      if (length < floor) out.push_back({length, {a, b}});
+  const double floor2 = floor * floor * (1 + 1e-12);
+  const auto nf = static_cast<std::int64_t>(m_.faces.size());
+#pragma omp parallel if (nf >= kParallelMinItems)
+  {
+    std::vector<std::pair<double, std::array<Index, 2>>> part;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t f = 0; f < nf; ++f) {
+      if (!editor_.alive(static_cast<std::uint32_t>(f))) continue;
+      const Triangle& t = m_.faces[f];
+      for (int i = 0; i < 3; ++i) {
+        const Index a = t[i], b = t[(i + 1) % 3];
+        if (a > b) continue;
+        const Vec3 d = m_.vertices[b] - m_.vertices[a];
+        if (!(dot(d, d) < floor2)) continue;
+        if (const double length = norm(d); length < floor) part.push_back({length, {a, b}});
+      }
     }
+#pragma omp critical(molsurf_short_edges)
+    out.insert(out.end(), part.begin(), part.end());
   }
   std::sort(out.begin(), out.end());
   return out;
 }
 
 void Cleaner::shorten_edges(CleanupStats& stats) {
-  std::vector<double> lengths;
-  lengths.reserve(m_.faces.size() * 3 / 2);
-  for (std::uint32_t f = 0; f < m_.faces.size(); ++f) {
-    if (!editor_.alive(f)) continue;
-    const Triangle& t = m_.faces[f];
-    for (int i = 0; i < 3; ++i)
-      if (t[i] < t[(i + 1) % 3]) lengths.push_back(norm(m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]]));
+  // The median edge from squared lengths (the root of the median square is the median
+  // length), gathered in parallel: the median is the same in any order.
+  std::vector<double> lengths2;
+  const auto nf = static_cast<std::int64_t>(m_.faces.size());
+#pragma omp parallel if (nf >= kParallelMinItems)
+  {
+    std::vector<double> part;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t f = 0; f < nf; ++f) {
+      if (!editor_.alive(static_cast<std::uint32_t>(f))) continue;
+      const Triangle& t = m_.faces[f];
+      for (int i = 0; i < 3; ++i)
+        if (t[i] < t[(i + 1) % 3]) {
+          const Vec3 d = m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]];
+          part.push_back(dot(d, d));
+        }
+    }
+#pragma omp critical(molsurf_edge_lengths)
+    lengths2.insert(lengths2.end(), part.begin(), part.end());
   }
-  if (lengths.empty()) return;
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  const double floor = options_.min_edge_fraction * lengths[lengths.size() / 2];
+  if (lengths2.empty()) return;
+  std::nth_element(lengths2.begin(), lengths2.begin() + lengths2.size() / 2, lengths2.end());
+  const double floor = options_.min_edge_fraction * std::sqrt(lengths2[lengths2.size() / 2]);
   std::vector<std::pair<double, std::array<Index, 2>>> edges = short_edges(floor);
   stats.short_edges_before = edges.size();
   for (int pass = 0; pass < options_.passes && !edges.empty(); ++pass) {
