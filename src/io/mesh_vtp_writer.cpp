@@ -2,7 +2,10 @@
 // (appended raw data, UInt64 block headers, zlib blocks of 32 KiB), so that VTK, ParaView
 // and our own reader (mesh_vtp.cpp) read it alike. VTK compresses the blocks one after
 // another; here they are compressed in parallel (zlib level 1: at the default level a
-// surface's file is only 2 % smaller and takes half as long again to write).
+// surface's file is only 2 % smaller and takes half as long again to write). Floating-point
+// arrays are stored in zlib's uncompressed blocks (level 0): their mantissas shrink by
+// 16 % at level 1, for two fifths of the compression time (2hhb: 0.07 -> 0.04 s, 4.5 ->
+// 5.2 MB).
 // Stored: double points (exact), float32 area-weighted point normals, Int32 connectivity
 // and offsets while ids fit (Int64 beyond), cell data "tag" and, when atoms are given,
 // "atom_serial", "residue_number", "residue_name", "chain" of each face's atom.
@@ -13,6 +16,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -33,6 +37,7 @@ struct AppendedArray {
   std::vector<char> raw;  // released once compressed
   std::size_t raw_size = 0;
   std::vector<std::vector<unsigned char>> blocks;
+  int zlib_level = 1;
   std::uint64_t offset = 0;  // from the start of the appended data
 
   std::size_t block_count() const { return (raw.size() + kBlockSize - 1) / kBlockSize; }
@@ -56,6 +61,7 @@ AppendedArray numeric_array(const char* type, const char* name, int components, 
   if (components > 1) a.element += " NumberOfComponents=\"" + std::to_string(components) + "\"";
   a.element += " format=\"appended\"";
   a.raw = std::move(raw);
+  if (std::string_view(type).starts_with("Float")) a.zlib_level = 0;
   return a;
 }
 
@@ -100,7 +106,7 @@ void compress_all(const path& file, std::vector<AppendedArray*>& arrays) {
     uLongf produced = compressBound(static_cast<uLong>(size));
     out.resize(produced);
     if (compress2(out.data(), &produced, reinterpret_cast<const Bytef*>(a.raw.data() + begin), static_cast<uLong>(size),
-                  1) != Z_OK)
+                  a.zlib_level) != Z_OK)
       ++failures;
     out.resize(produced);
   }
