@@ -27,6 +27,20 @@ VertexFaceIndex index_of(const Mesh& m) {
   return index;
 }
 
+TEST(VertexFaceIndex, AddAllListsAsAddingOneByOne) {
+  Mesh m = bipyramid();
+  m.vertices.push_back({5, 5, 5});  // a vertex without a face
+  m.faces.push_back({0, 0, 1});     // a repeated corner: listed twice around it
+  const VertexFaceIndex one_by_one = index_of(m);
+  VertexFaceIndex all(m.vertices.size());
+  all.add_all(m.faces);
+  for (Index v = 0; v < m.vertices.size(); ++v) EXPECT_EQ(as_vector(all.of(v)), as_vector(one_by_one.of(v))) << v;
+  EXPECT_EQ(as_vector(all.of(0)), (std::vector<std::uint32_t>{0, 2, 3, 5, 6, 6}));
+  EXPECT_TRUE(all.of(5).empty());
+  all.add(7, {5, 1, 0});  // grows past the allocated size
+  EXPECT_EQ(as_vector(all.of(0)), (std::vector<std::uint32_t>{0, 2, 3, 5, 6, 6, 7}));
+}
+
 TEST(VertexFaceIndex, ListsFacesInTheOrderAddedAndForgetsRemovedOnes) {
   const Mesh m = bipyramid();
   VertexFaceIndex index = index_of(m);

@@ -20,7 +20,7 @@ bool acceptable(geometry::TrianglePairRelation r) {
 }  // namespace
 
 void EditableMesh::index_all(double cell) {
-  for (std::uint32_t f = 0; f < mesh_.faces.size(); ++f) index(f);
+  faces_of_.add_all(mesh_.faces);
   grid_ = std::make_unique<FaceGrid>(mesh_, cell);
 }
 

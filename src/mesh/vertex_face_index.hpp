@@ -21,6 +21,17 @@ class VertexFaceIndex {
   void add(std::uint32_t f, const Triangle& t) {
     for (Index v : t) list(v).push_back(f);
   }
+  // Every face of `faces`, in order, as add() would list them, with each list allocated
+  // once at its final size.
+  void add_all(std::span<const Triangle> faces) {
+    std::vector<std::uint32_t> count(slot_of_.size(), 0);
+    for (const Triangle& t : faces)
+      for (Index v : t) ++count[v];
+    for (const Triangle& t : faces)
+      for (Index v : t)
+        if (slot_of_[v] == kNoSlot) list(v).reserve(count[v]);
+    for (std::uint32_t f = 0; f < faces.size(); ++f) add(f, faces[f]);
+  }
   // Face f (whose corners are t) no longer listed anywhere around them.
   void remove(std::uint32_t f, const Triangle& t) {
     for (Index v : t) std::erase(list(v), f);
