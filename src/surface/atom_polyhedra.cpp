@@ -92,6 +92,20 @@ PolyhedronTemplate make_template(int frequency) {
 
 }  // namespace
 
+std::optional<bool> settled_by_balls(const std::array<geometry::Interval, 3>& box, const Vec3& centre, double inradius,
+                                     double circumradius) {
+  double nearest2 = 0, farthest2 = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double lo = box[axis].lo - centre[axis], hi = box[axis].hi - centre[axis];
+    const double nearest = lo > 0 ? lo : (hi < 0 ? -hi : 0.0), farthest = std::max(std::fabs(lo), std::fabs(hi));
+    nearest2 += nearest * nearest;
+    farthest2 += farthest * farthest;
+  }
+  if (farthest2 < inradius * inradius) return true;
+  if (nearest2 > circumradius * circumradius) return false;
+  return std::nullopt;  // also for a NaN bound
+}
+
 AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options) {
   const std::size_t n = atoms.size();
   centre_.resize(n);

@@ -5,9 +5,11 @@
 // join exactly the same polyhedra.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "geometry/interval.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/surface.hpp"
@@ -47,6 +49,16 @@ struct PolyhedronTemplate {
   std::array<std::array<Vec3, 3>, 20> base_inverse;  // rows
   std::vector<std::uint32_t> row_start;  // first face of each row within a base face's block
 };
+
+// What a polyhedron's inscribed and circumscribed balls (centre, inradius, circumradius as
+// AtomPolyhedra gives them) settle about a point known only to lie in `box`: inside the
+// closed polyhedron when the whole box lies in the inscribed ball, outside when it lies
+// wholly beyond the circumscribed one, nothing otherwise (an exact test decides). The
+// whole box, not its midpoint: a constructed point's box can be wide (a line nearly
+// parallel to a plane), and its midpoint then says nothing of where the point is. The
+// radii's margins (1e-9 relative) cover the rounding of the distances many times over.
+std::optional<bool> settled_by_balls(const std::array<geometry::Interval, 3>& box, const Vec3& centre, double inradius,
+                                     double circumradius);
 
 class AtomPolyhedra {
  public:

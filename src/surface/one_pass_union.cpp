@@ -126,11 +126,11 @@ bool line_meets_triangle(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>
 // centre, so x is inside iff it is behind the face that the ray from the centre through
 // x meets.
 bool inside_closed(const ImplicitPoint& x, const Neighbour& n) {
+  if (const auto settled = settled_by_balls({x.coordinate(0), x.coordinate(1), x.coordinate(2)}, n.centre,
+                                            n.inradius, n.circumradius))
+    return *settled;
   const Vec3 m{x.coordinate(0).mid(), x.coordinate(1).mid(), x.coordinate(2).mid()};
   const Vec3 d = m - n.centre;
-  const double d2 = dot(d, d);
-  if (d2 < n.inradius * n.inradius) return true;
-  if (d2 > n.circumradius * n.circumradius) return false;
   auto try_face = [&](std::uint32_t g, bool& inside) {
     const auto t = n.face(g);
     if (!in_cone(n.centre, t, x)) return false;
