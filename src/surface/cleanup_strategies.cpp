@@ -3,7 +3,10 @@
 // makes its steps and keeps them only as a whole. improve_face tries them in order.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 #include <tuple>
+#include <type_traits>
 
 #include "common/parallel_threshold.hpp"
 #include "surface/cleanup_rules.hpp"
@@ -16,6 +19,30 @@ namespace {
 // Whether every tag of x is one of y's (both sorted).
 bool within(const std::vector<std::int32_t>& x, const std::vector<std::int32_t>& y) {
   return std::includes(y.begin(), y.end(), x.begin(), x.end());
+}
+
+// take(a, b) for every edge (a, b) of every living face, in its face's direction, in
+// parallel; what it returns (an optional) gathered from all threads, in an order that
+// depends on them: callers sort it or take an order statistic.
+template <class Take>
+auto gather_edges(const Mesh& m, const MeshEditor& editor, Take take) {
+  using Value = typename std::invoke_result_t<Take, Index, Index>::value_type;
+  std::vector<Value> out;
+  const auto nf = static_cast<std::int64_t>(m.faces.size());
+#pragma omp parallel if (nf >= kParallelMinItems)
+  {
+    std::vector<Value> part;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t f = 0; f < nf; ++f) {
+      if (!editor.alive(static_cast<std::uint32_t>(f))) continue;
+      const Triangle& t = m.faces[f];
+      for (int i = 0; i < 3; ++i)
+        if (auto value = take(t[i], t[(i + 1) % 3])) part.push_back(*value);
+    }
+#pragma omp critical(molsurf_cleanup_edges)
+    out.insert(out.end(), part.begin(), part.end());
+  }
+  return out;
 }
 
 std::array<double, 3> edge_lengths(const Mesh& m, const Triangle& t) {
@@ -367,54 +394,29 @@ void Cleaner::move_candidates(Index v, std::vector<Option>& out) const {
 // angle it touches worse than it was or than the angle target; every other rule of an
 // edit holds (link condition, no face turned, budgets, the exact crossing test).
 std::vector<std::pair<double, std::array<Index, 2>>> Cleaner::short_edges(double floor) const {
-  // Each edge once, from the face that runs it upward; in parallel, squared lengths first
-  // (the root only below the floor's square, widened past its rounding), sorted after.
-  std::vector<std::pair<double, std::array<Index, 2>>> out;
+  // Each edge once, from the face that runs it upward; squared lengths first (the root
+  // only below the floor's square, widened past its rounding), sorted after.
   const double floor2 = floor * floor * (1 + 1e-12);
-  const auto nf = static_cast<std::int64_t>(m_.faces.size());
-#pragma omp parallel if (nf >= kParallelMinItems)
-  {
-    std::vector<std::pair<double, std::array<Index, 2>>> part;
-#pragma omp for schedule(static) nowait
-    for (std::int64_t f = 0; f < nf; ++f) {
-      if (!editor_.alive(static_cast<std::uint32_t>(f))) continue;
-      const Triangle& t = m_.faces[f];
-      for (int i = 0; i < 3; ++i) {
-        const Index a = t[i], b = t[(i + 1) % 3];
-        if (a > b) continue;
-        const Vec3 d = m_.vertices[b] - m_.vertices[a];
-        if (!(dot(d, d) < floor2)) continue;
-        if (const double length = norm(d); length < floor) part.push_back({length, {a, b}});
-      }
-    }
-#pragma omp critical(molsurf_short_edges)
-    out.insert(out.end(), part.begin(), part.end());
-  }
+  using ShortEdge = std::pair<double, std::array<Index, 2>>;
+  auto out = gather_edges(m_, editor_, [&](Index a, Index b) -> std::optional<ShortEdge> {
+    if (a > b) return std::nullopt;
+    const Vec3 d = m_.vertices[b] - m_.vertices[a];
+    if (!(dot(d, d) < floor2)) return std::nullopt;
+    if (const double length = norm(d); length < floor) return std::pair{length, std::array<Index, 2>{a, b}};
+    return std::nullopt;
+  });
   std::sort(out.begin(), out.end());
   return out;
 }
 
 void Cleaner::shorten_edges(CleanupStats& stats) {
   // The median edge from squared lengths (the root of the median square is the median
-  // length), gathered in parallel: the median is the same in any order.
-  std::vector<double> lengths2;
-  const auto nf = static_cast<std::int64_t>(m_.faces.size());
-#pragma omp parallel if (nf >= kParallelMinItems)
-  {
-    std::vector<double> part;
-#pragma omp for schedule(static) nowait
-    for (std::int64_t f = 0; f < nf; ++f) {
-      if (!editor_.alive(static_cast<std::uint32_t>(f))) continue;
-      const Triangle& t = m_.faces[f];
-      for (int i = 0; i < 3; ++i)
-        if (t[i] < t[(i + 1) % 3]) {
-          const Vec3 d = m_.vertices[t[(i + 1) % 3]] - m_.vertices[t[i]];
-          part.push_back(dot(d, d));
-        }
-    }
-#pragma omp critical(molsurf_edge_lengths)
-    lengths2.insert(lengths2.end(), part.begin(), part.end());
-  }
+  // length): the same in any order.
+  std::vector<double> lengths2 = gather_edges(m_, editor_, [&](Index a, Index b) -> std::optional<double> {
+    if (!(a < b)) return std::nullopt;
+    const Vec3 d = m_.vertices[b] - m_.vertices[a];
+    return dot(d, d);
+  });
   if (lengths2.empty()) return;
   std::nth_element(lengths2.begin(), lengths2.begin() + lengths2.size() / 2, lengths2.end());
   const double floor = options_.min_edge_fraction * std::sqrt(lengths2[lengths2.size() / 2]);
