@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -346,6 +347,64 @@ TEST(MeshCheck, DuplicateFace) {
   EXPECT_EQ(c.duplicate_faces, 1u);
   EXPECT_FALSE(c.valid());
   EXPECT_TRUE(mentions(c, "duplicate"));
+}
+
+// Every edge has two faces, so duplicates are counted from the edge table: a closed
+// two-face "pillow" (the faces facing apart, or the same way), beside a valid solid.
+TEST(MeshCheck, DuplicateFacesWhereEveryEdgeHasTwoFaces) {
+  Mesh pillow;
+  pillow.vertices = {{5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+  pillow.faces = {{0, 1, 2}, {0, 2, 1}};
+  MeshCheck c = check_mesh(joined(tetrahedron(), pillow));
+  EXPECT_EQ(c.boundary_edges + c.nonmanifold_edges + c.misoriented_edges, 0u);
+  EXPECT_EQ(c.duplicate_faces, 1u);
+  EXPECT_FALSE(c.valid());
+  EXPECT_TRUE(mentions(c, "duplicate"));
+
+  pillow.faces[1] = pillow.faces[0];
+  c = check_mesh(joined(tetrahedron(), pillow));
+  EXPECT_EQ(c.misoriented_edges, 3u);
+  EXPECT_EQ(c.duplicate_faces, 1u);
+
+  // Two faces sharing two corners only: no duplicate.
+  c = check_mesh(joined(tetrahedron(), cube({3, 3, 3})));
+  EXPECT_EQ(c.duplicate_faces, 0u);
+}
+
+// Two closed cones whose apexes are one vertex: two fans there, found with few faces around
+// the vertex (paired directly) and with many (sorted).
+TEST(MeshCheck, TwoConesSharingTheirApex) {
+  for (const int sides : {3, 5, 8, 12}) {
+    Mesh m;
+    m.vertices.push_back({0, 0, 0});  // the shared apex
+    for (const double h : {1.0, -1.0}) {
+      const auto base = static_cast<molsurf::Index>(m.vertices.size());
+      for (int k = 0; k < sides; ++k) {
+        const double a = 2 * 3.14159265358979 * k / sides;
+        m.vertices.push_back({std::cos(a), std::sin(a), h});
+      }
+      const auto centre = static_cast<molsurf::Index>(m.vertices.size());
+      m.vertices.push_back({0, 0, h});
+      for (int k = 0; k < sides; ++k) {
+        const molsurf::Index p = base + k, q = base + (k + 1) % sides;
+        // Outward: seen from outside, counter-clockwise (the lower cone mirrored).
+        if (h > 0) {
+          m.faces.push_back({0, q, p});
+          m.faces.push_back({centre, p, q});
+        } else {
+          m.faces.push_back({0, p, q});
+          m.faces.push_back({centre, q, p});
+        }
+      }
+    }
+    const MeshCheck c = check_mesh(m);
+    SCOPED_TRACE(sides);
+    EXPECT_TRUE(c.closed());
+    EXPECT_TRUE(c.oriented());
+    EXPECT_EQ(c.nonmanifold_vertices, 1u);
+    EXPECT_EQ(c.examples_nonmanifold_vertex, std::vector<std::size_t>{0});
+    EXPECT_FALSE(c.valid());
+  }
 }
 
 TEST(MeshCheck, UnusedVerticesAndBadIndices) {

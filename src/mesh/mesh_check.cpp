@@ -38,6 +38,7 @@
 #include <numeric>
 #include <optional>
 #include <functional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -168,6 +169,38 @@ void check_edges(const EdgeTable& table, std::size_t max_examples, MeshCheck& re
   result.examples_misoriented = misoriented.sorted();
 }
 
+// The fans of a vertex with few faces: faces that share a link vertex w (an edge (v, w))
+// are joined; by pairs, without sorting (a vertex of a surface has about six faces).
+constexpr std::uint32_t kSmallFan = 16;
+
+std::size_t small_fan_count(const Mesh& mesh, Index v, std::span<const std::uint32_t> faces) {
+  std::array<std::array<Index, 2>, kSmallFan> link;
+  std::array<std::uint32_t, kSmallFan> parent;
+  const auto k = static_cast<std::uint32_t>(faces.size());
+  for (std::uint32_t i = 0; i < k; ++i) {
+    const Triangle& t = mesh.faces[faces[i]];
+    const int corner = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+    link[i] = {t[(corner + 1) % 3], t[(corner + 2) % 3]};
+    parent[i] = i;
+  }
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t fans = k;
+  for (std::uint32_t i = 0; i < k; ++i)
+    for (std::uint32_t j = i + 1; j < k; ++j)
+      if (link[i][0] == link[j][0] || link[i][0] == link[j][1] || link[i][1] == link[j][0] ||
+          link[i][1] == link[j][1]) {
+        const std::uint32_t a = find(i), b = find(j);
+        if (a != b) {
+          parent[a] = b;
+          --fans;
+        }
+      }
+  return fans;
+}
+
 // Marks used vertices and counts, per vertex, the fans its faces form: faces around v
 // are joined when they share an edge (v, w), i.e. the components of v's link graph whose
 // nodes are the other corners w and whose edges are the faces.
@@ -208,6 +241,13 @@ void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topologic
     for (std::int64_t v = 0; v < nv_signed; ++v)
       errors.run(v, [&] {
         if (start[v + 1] - start[v] < 2) return;  // zero or one face: a single fan
+        if (start[v + 1] - start[v] <= kSmallFan) {
+          if (small_fan_count(mesh, static_cast<Index>(v), {incident.data() + start[v], incident.data() + start[v + 1]}) > 1) {
+            ++nonmanifold;
+            local_examples.add(static_cast<std::size_t>(v));
+          }
+          return;
+        }
         nodes.clear();
         link_edges.clear();
         for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
@@ -244,6 +284,24 @@ void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topologic
   errors.rethrow();
   result.nonmanifold_vertices = nonmanifold;
   result.examples_nonmanifold_vertex = examples.sorted();
+}
+
+// Duplicate faces of a mesh whose edges all have exactly two faces: two faces with the
+// same corners then share all three edges, and each edge has just the two of them, so
+// they are found in the edge table without sorting the faces (every pair three times).
+std::size_t count_duplicate_faces_on_two_face_edges(const Mesh& mesh, const EdgeTable& table) {
+  auto corners = [&](std::uint32_t f) {
+    Triangle t = mesh.faces[f];
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::size_t shared_edges = 0;
+  const auto nv = static_cast<std::int64_t>(table.bucket_start.size() - 1);
+#pragma omp parallel for schedule(static) reduction(+ : shared_edges) if (nv >= kParallelMinItems)
+  for (std::int64_t v = 0; v < nv; ++v)
+    for (std::uint32_t k = table.bucket_start[v]; k + 1 < table.bucket_start[v + 1]; k += 2)
+      if (corners(table.uses[k].face) == corners(table.uses[k + 1].face)) ++shared_edges;
+  return shared_edges / 3;
 }
 
 std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8_t>& topological) {
@@ -476,12 +534,18 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
     }
   result.examples_degenerate = degenerate_examples.sorted();
 
-  check_edges(build_edge_table(mesh, topological), options.max_examples, result);
+  const bool all_topological = std::all_of(topological.begin(), topological.end(), [](std::uint8_t t) { return t != 0; });
+  {
+    const EdgeTable edges = build_edge_table(mesh, topological);
+    check_edges(edges, options.max_examples, result);
+    result.duplicate_faces = all_topological && result.boundary_edges == 0 && result.nonmanifold_edges == 0
+                                 ? count_duplicate_faces_on_two_face_edges(mesh, edges)
+                                 : count_duplicate_faces(mesh, topological);
+  }
   check_vertices(mesh, topological, options.max_examples, result);
-  result.duplicate_faces = count_duplicate_faces(mesh, topological);
   // With every face's corners distinct, the edge table's edges are the mesh's: V - E + F
   // without sorting the edges a second time.
-  if (std::all_of(topological.begin(), topological.end(), [](std::uint8_t t) { return t != 0; }))
+  if (all_topological)
     result.euler_characteristic = static_cast<long>(mesh.vertices.size() - result.unused_vertices) -
                                   static_cast<long>(result.edges) + static_cast<long>(nf);
   else

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <tuple>
 
+#include "common/parallel_exceptions.hpp"
 #include "geometry/point_grid.hpp"
 #include "molsurf/icosphere.hpp"
 
@@ -203,17 +204,25 @@ NeighbourList find_neighbours(const AtomPolyhedra& polyhedra) {
   }
   const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return !polyhedra.duplicate(i); });
   std::vector<std::vector<std::uint32_t>> rows(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (polyhedra.duplicate(i)) continue;
-    grid.for_each_near(centres[i], [&](std::uint32_t j) {
-      if (j == i) return;
-      const Vec3 d = centres[j] - centres[i];
-      const double reach = polyhedra.circumradius(i) + polyhedra.circumradius(j);
-      if (dot(d, d) <= reach * reach * (1 + 1e-9)) rows[i].push_back(j);
+  // Rows are independent (the grid is only read): in parallel, each sorted, so the list
+  // does not depend on the thread count.
+  const auto count = static_cast<std::int64_t>(n);
+  ParallelExceptions errors;
+#pragma omp parallel for schedule(dynamic, 256) if (count >= 4096)
+  for (std::int64_t row = 0; row < count; ++row)
+    errors.run(row, [&] {
+      const auto i = static_cast<std::size_t>(row);
+      if (polyhedra.duplicate(i)) return;
+      grid.for_each_near(centres[i], [&](std::uint32_t j) {
+        if (j == i) return;
+        const Vec3 d = centres[j] - centres[i];
+        const double reach = polyhedra.circumradius(i) + polyhedra.circumradius(j);
+        if (dot(d, d) <= reach * reach * (1 + 1e-9)) rows[i].push_back(j);
+      });
+      std::sort(rows[i].begin(), rows[i].end());
+      rows[i].erase(std::unique(rows[i].begin(), rows[i].end()), rows[i].end());
     });
-    std::sort(rows[i].begin(), rows[i].end());
-    rows[i].erase(std::unique(rows[i].begin(), rows[i].end()), rows[i].end());
-  }
+  errors.rethrow();
   for (std::size_t i = 0; i < n; ++i) list.first[i + 1] = list.first[i] + static_cast<std::uint32_t>(rows[i].size());
   list.atoms.reserve(list.first[n]);
   for (const auto& row : rows) list.atoms.insert(list.atoms.end(), row.begin(), row.end());
