@@ -301,7 +301,7 @@ class AtomTrimmer {
 
  private:
   void load_neighbours(std::uint32_t atom);
-  void find_lens(Neighbour& n) const;
+  void find_lens(Neighbour& n);
   void find_deepest();
   // The trace of neighbour face g on face f: adds the points of f ∩ g and, when they span a
   // segment, the segment. Returns false if they do not meet.
@@ -318,6 +318,7 @@ class AtomTrimmer {
   std::vector<std::uint32_t> deepest_;  // per vertex: the neighbour whose inscribed ball holds it most deeply, or ~0
   std::vector<double> depth_;
   std::vector<std::uint32_t> corner_id_;  // per vertex: its id among the atom's points, or ~0
+  std::vector<std::uint32_t> lens_candidates_;  // find_lens's buffer
   std::vector<Neighbour> nbr_;
   std::size_t nbr_count_ = 0;
   // The face being trimmed.
@@ -348,7 +349,7 @@ void AtomTrimmer::load_neighbours(std::uint32_t atom) {
   }
 }
 
-void AtomTrimmer::find_lens(Neighbour& n) const {
+void AtomTrimmer::find_lens(Neighbour& n) {
   n.lens.clear();
   n.lens_boxes.clear();
   n.group_end.clear();
@@ -362,7 +363,7 @@ void AtomTrimmer::find_lens(Neighbour& n) const {
   auto misses_shell = [&](const Vec3& unit_centre, double unit_radius) {
     const Vec3 d = n.centre + unit_centre * n.scale - centre_;
     const double r = unit_radius * n.scale + 2 * error, dist2 = dot(d, d);
-    return dist2 > (outer + r) * (outer + r) || (r < inner && dist2 < (inner - r) * (inner - r));
+    return (dist2 > (outer + r) * (outer + r)) | ((r < inner) & (dist2 < (inner - r) * (inner - r)));
   };
   const PolyhedronTemplate& shape = *n.shape;
   // Then on the face's corners: all three inside the inscribed ball put the face inside it
@@ -387,8 +388,16 @@ void AtomTrimmer::find_lens(Neighbour& n) const {
     if (misses_shell(shape.block_centre[b], shape.block_radius[b])) continue;
     BoundingBox group;
     const std::size_t first = n.lens.size();
+    // The faces whose balls meet the shell, listed without a branch per face (which faces
+    // do is unpredictable), then tested on their corners.
+    lens_candidates_.resize(block_faces);
+    std::uint32_t candidates = 0;
     for (std::uint32_t g = b * block_faces; g < (b + 1) * block_faces; ++g) {
-      if (misses_shell(shape.face_centre[g], shape.face_radius[g])) continue;
+      lens_candidates_[candidates] = g;
+      candidates += !misses_shell(shape.face_centre[g], shape.face_radius[g]);
+    }
+    for (std::uint32_t k = 0; k < candidates; ++k) {
+      const std::uint32_t g = lens_candidates_[k];
       const auto t = n.face(g);
       if (misses_shell_by_corners(t)) continue;
       n.lens.push_back(g);
@@ -419,14 +428,12 @@ void AtomTrimmer::find_deepest() {
       for (std::uint32_t k = shape.block_vertices_first[b]; k < shape.block_vertices_first[b + 1]; ++k) {
         const std::uint32_t v = shape.block_vertices[k];
         const Vec3 d = vertices_[v] - c;
-        const double d2 = dot(d, d);
-        if (d2 < r2) {
-          const double depth = (r2 - d2) * half_over_r;
-          if (depth > depth_[v]) {
-            depth_[v] = depth;
-            deepest_[v] = ni;
-          }
-        }
+        // Not positive outside the ball, so never above a depth found (at least 0); chosen
+        // without a branch (whether a vertex is deeper here is unpredictable).
+        const double depth = (r2 - dot(d, d)) * half_over_r;
+        const bool deeper = depth > depth_[v];
+        depth_[v] = deeper ? depth : depth_[v];
+        deepest_[v] = deeper ? ni : deepest_[v];
       }
     }
   }
