@@ -381,7 +381,7 @@ void AtomTrimmer::find_lens(Neighbour& n) {
       least = std::min(least, d2);
       most = std::max(most, d2);
     }
-    return most < below2 * (1 - 1e-12) || least > beyond2;
+    return (most < below2 * (1 - 1e-12)) | (least > beyond2);
   };
   const auto block_faces = static_cast<std::uint32_t>(shape.frequency * shape.frequency);
   for (std::uint32_t b = 0; b < 20; ++b) {
@@ -396,11 +396,14 @@ void AtomTrimmer::find_lens(Neighbour& n) {
       lens_candidates_[candidates] = g;
       candidates += !misses_shell(shape.face_centre[g], shape.face_radius[g]);
     }
+    std::uint32_t kept = 0;
     for (std::uint32_t k = 0; k < candidates; ++k) {
-      const std::uint32_t g = lens_candidates_[k];
-      const auto t = n.face(g);
-      if (misses_shell_by_corners(t)) continue;
-      n.lens.push_back(g);
+      lens_candidates_[kept] = lens_candidates_[k];
+      kept += !misses_shell_by_corners(n.face(lens_candidates_[k]));
+    }
+    for (std::uint32_t k = 0; k < kept; ++k) {
+      const auto t = n.face(lens_candidates_[k]);
+      n.lens.push_back(lens_candidates_[k]);
       n.lens_boxes.push_back(box_of(t[0], t[1], t[2]));
       group.extend(n.lens_boxes.back());
     }
@@ -731,14 +734,15 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
     work_.clear();
     // Cull (§2.2.1): a face whose corners are inside a neighbour's inscribed ball is
     // inside it (the ball is inside the convex polyhedron).
-      bool dropped = false;
+    bool dropped = false;
     auto deep_inside = [&](const Neighbour& n) {
-      if (!f_box_.overlaps(n.box)) return false;
+      const double r2 = n.inradius * n.inradius;
+      bool inside = true;  // all three tested: no branch per corner
       for (const Vec3& c : f_) {
         const Vec3 d = c - n.centre;
-        if (!(dot(d, d) < n.inradius * n.inradius)) return false;
+        inside &= dot(d, d) < r2;
       }
-      return true;
+      return inside;
     };
     // The neighbours that hold the corners most deeply usually hold the whole face.
     for (int k = 0; k < 3 && !dropped; ++k) {
