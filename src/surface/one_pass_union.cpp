@@ -181,7 +181,9 @@ struct FaceWork {
   std::vector<ImplicitPoint> points;
   std::vector<PointDefinition> definitions;  // of points
   std::vector<Place> places;
-  std::vector<std::vector<std::uint32_t>> on_neighbour;  // per point: neighbours whose boundary holds it
+  // Per point: neighbours whose boundary holds it. Longer than `points` when an earlier face
+  // had more: the lists are emptied and reused, not freed (one allocation per point else).
+  std::vector<std::vector<std::uint32_t>> on_neighbour;
   std::vector<Segment> segments;
   std::vector<std::uint32_t> near;   // neighbours whose boxes meet the face's
   std::vector<std::uint32_t> relevant;
@@ -205,7 +207,6 @@ struct FaceWork {
     points.clear();
     definitions.clear();
     places.clear();
-    on_neighbour.clear();
     segments.clear();
     near.clear();
     relevant.clear();
@@ -234,8 +235,10 @@ struct FaceWork {
     points.push_back(x);
     definitions.push_back(d);
     places.push_back(place);
-    on_neighbour.emplace_back();
-    if (neighbour != ~0u) on_neighbour.back().push_back(neighbour);
+    if (on_neighbour.size() < points.size()) on_neighbour.emplace_back();
+    auto& on = on_neighbour[points.size() - 1];
+    on.clear();
+    if (neighbour != ~0u) on.push_back(neighbour);
     return static_cast<std::uint32_t>(points.size() - 1);
   }
 };
