@@ -46,10 +46,11 @@ struct BoundingBox {
     extend(b.min);
     extend(b.max);
   }
-  // Closed boxes: touching boxes overlap, so culling never drops a contact.
+  // Closed boxes: touching boxes overlap, so culling never drops a contact. All six
+  // comparisons are made (`&`): a chain of branches mispredicts on mixed outcomes.
   bool overlaps(const BoundingBox& b) const {
-    return min.x <= b.max.x && b.min.x <= max.x && min.y <= b.max.y && b.min.y <= max.y && min.z <= b.max.z &&
-           b.min.z <= max.z;
+    return (min.x <= b.max.x) & (b.min.x <= max.x) & (min.y <= b.max.y) & (b.min.y <= max.y) & (min.z <= b.max.z) &
+           (b.min.z <= max.z);
   }
 };
 

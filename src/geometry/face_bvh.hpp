@@ -25,10 +25,7 @@
 namespace molsurf::geometry {
 
 // Closed-box overlap; ties overlap.
-inline bool boxes_overlap(const BoundingBox& a, const BoundingBox& b) {
-  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
-         a.min.z <= b.max.z && b.min.z <= a.max.z;
-}
+inline bool boxes_overlap(const BoundingBox& a, const BoundingBox& b) { return a.overlaps(b); }
 
 // The closed box of one face, from its exact corner coordinates.
 BoundingBox face_box(const Mesh& mesh, std::size_t face);
@@ -79,9 +76,9 @@ class BoxBvh {
       b.max = {max_x[i], max_y[i], max_z[i]};
       return b;
     }
-    bool overlaps(std::size_t i, const BoundingBox& q) const {
-      return min_x[i] <= q.max.x && q.min.x <= max_x[i] && min_y[i] <= q.max.y && q.min.y <= max_y[i] &&
-             min_z[i] <= q.max.z && q.min.z <= max_z[i];
+    bool overlaps(std::size_t i, const BoundingBox& q) const {  // without branches, as BoundingBox::overlaps
+      return (min_x[i] <= q.max.x) & (q.min.x <= max_x[i]) & (min_y[i] <= q.max.y) & (q.min.y <= max_y[i]) &
+             (min_z[i] <= q.max.z) & (q.min.z <= max_z[i]);
     }
   };
 

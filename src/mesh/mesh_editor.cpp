@@ -193,10 +193,7 @@ bool MeshEditor::crosses_nothing_near(const MeshEdit& e, const Triangle& t) {
     if (seen_[g] == query_) return true;
     seen_[g] = query_;
     if (!s_.alive_[g]) return true;
-    const BoundingBox& b = grid.box(g);
-    if (b.max.x < box.min.x || box.max.x < b.min.x || b.max.y < box.min.y || box.max.y < b.min.y ||
-        b.max.z < box.min.z || box.max.z < b.min.z)
-      return true;
+    if (!grid.box(g).overlaps(box)) return true;
     return acceptable(geometry::classify_triangle_pair(m, t, m.faces[g]));
   });
 }
