@@ -362,10 +362,7 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const ImplicitPoint& d
     const double permanent = std::fabs(w.x) * a0 + std::fabs(w.y) * a1 + std::fabs(w.z) * a2;
     const double spread = (h.x * a0 + h.y * a1 + h.z * a2) * (1 + 16 * eps);
     const double bound = 8 * eps * permanent + spread + 0x1p-900;
-    if (std::isfinite(bound) && std::isfinite(det)) {
-      if (det > bound) return 1;
-      if (-det > bound) return -1;
-    }
+    if (std::isfinite(bound) && std::isfinite(det) && std::fabs(det) > bound) return (det > 0) - (det < 0);
   }
   const IVec ia = to_interval(a);
   const IVec id = {d.coordinate(0), d.coordinate(1), d.coordinate(2)};

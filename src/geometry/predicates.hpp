@@ -53,8 +53,9 @@ inline int orient2d(double ax, double ay, double bx, double by, double cx, doubl
   const double detright = (by - ay) * (cx - ax);
   const double det = detleft - detright;
   const double bound = kOrient2dBound * (std::fabs(detleft) + std::fabs(detright)) + kUnderflowGuard;
-  if (det > bound) return 1;
-  if (-det > bound) return -1;
+  // One branch, taken almost always (the filter rarely fails); the sign itself without one
+  // (it is unpredictable). A NaN fails the test and goes to the exact path, as before.
+  if (std::fabs(det) > bound) return (det > 0) - (det < 0);
   return orient2d_exact(ax, ay, bx, by, cx, cy);
 }
 
@@ -77,8 +78,7 @@ inline int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) 
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * abs_cdz;
   const double bound = kOrient3dBound * permanent +
                        kUnderflowGuard * (1.0 + abs_adz + abs_bdz + abs_cdz);
-  if (det > bound) return -1;
-  if (-det > bound) return 1;
+  if (std::fabs(det) > bound) return (det < 0) - (det > 0);  // as orient2d's
   return orient3d_exact(a, b, c, d);
 }
 
