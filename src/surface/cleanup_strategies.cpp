@@ -8,6 +8,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "common/binned_median.hpp"
 #include "common/parallel_threshold.hpp"
 #include "surface/cleanup_rules.hpp"
 #include "surface/cleanup_worker.hpp"
@@ -411,15 +412,19 @@ std::vector<std::pair<double, std::array<Index, 2>>> Cleaner::short_edges(double
 
 void Cleaner::shorten_edges(CleanupStats& stats) {
   // The median edge from squared lengths (the root of the median square is the median
-  // length): the same in any order.
-  std::vector<double> lengths2 = gather_edges(m_, editor_, [&](Index a, Index b) -> std::optional<double> {
-    if (!(a < b)) return std::nullopt;
-    const Vec3 d = m_.vertices[b] - m_.vertices[a];
-    return dot(d, d);
-  });
-  if (lengths2.empty()) return;
-  std::nth_element(lengths2.begin(), lengths2.begin() + lengths2.size() / 2, lengths2.end());
-  const double floor = options_.min_edge_fraction * std::sqrt(lengths2[lengths2.size() / 2]);
+  // length): the same in any order. Each edge once, from the face that runs it upward.
+  const double median2 =
+      binned_median(static_cast<std::int64_t>(m_.faces.size()), [&](std::int64_t f, auto&& visit) {
+        if (!editor_.alive(static_cast<std::uint32_t>(f))) return;
+        const Triangle& t = m_.faces[f];
+        for (int i = 0; i < 3; ++i)
+          if (const Index a = t[i], b = t[(i + 1) % 3]; a < b) {
+            const Vec3 d = m_.vertices[b] - m_.vertices[a];
+            visit(dot(d, d));
+          }
+      });
+  if (std::isnan(median2)) return;
+  const double floor = options_.min_edge_fraction * std::sqrt(median2);
   std::vector<std::pair<double, std::array<Index, 2>>> edges = short_edges(floor);
   stats.short_edges_before = edges.size();
   for (int pass = 0; pass < options_.passes && !edges.empty(); ++pass) {
