@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "common/parallel_exceptions.hpp"
+#include "common/parallel_threshold.hpp"
 #include "mesh/topology.hpp"
 #include "surface/cleanup_worker.hpp"
 
@@ -68,9 +69,16 @@ class Sweep {
         std::sort(touched_.begin(), touched_.end());
         touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
         distorted.clear();
-        for (std::uint32_t f : touched_)
-          if (s_.editable.alive(f))
-            if (const double angle = serial.min_angle(f); angle < s_.options.min_angle_deg) distorted.emplace_back(angle, f);
+        // As in the first pass: in parallel, atan2 only where the tangent leaves it in doubt.
+        std::vector<double> angle(touched_.size());
+        const auto nt = static_cast<std::int64_t>(touched_.size());
+#pragma omp parallel for schedule(static) if (nt >= kParallelMinItems / 4)
+        for (std::int64_t k = 0; k < nt; ++k) {
+          const std::uint32_t f = touched_[k];
+          angle[k] = s_.editable.alive(f) && !serial.surely_at_least(f, tan_goal) ? serial.min_angle(f) : 180;
+        }
+        for (std::size_t k = 0; k < touched_.size(); ++k)
+          if (angle[k] < s_.options.min_angle_deg) distorted.emplace_back(angle[k], touched_[k]);
       }
       touched_.clear();
       if (distorted.empty()) break;
