@@ -85,7 +85,8 @@ struct Neighbour {
 bool box_meets_ball(const BoundingBox& b, const Vec3& c, double r) {
   double d2 = 0;
   for (int axis = 0; axis < 3; ++axis) {
-    const double x = c[axis], e = x < b.min[axis] ? b.min[axis] - x : (x > b.max[axis] ? x - b.max[axis] : 0.0);
+    // The distance beyond the box on this axis (0 inside it, and for a NaN), without branches.
+    const double x = c[axis], e = std::max(0.0, std::max(b.min[axis] - x, x - b.max[axis]));
     d2 += e * e;
   }
   const double reach = r + 1e-9 * (r + std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}));
@@ -322,6 +323,8 @@ class AtomTrimmer {
   std::vector<double> depth_;
   std::vector<std::uint32_t> corner_id_;  // per vertex: its id among the atom's points, or ~0
   std::vector<std::uint32_t> lens_candidates_;  // find_lens's buffer
+  std::vector<std::uint32_t> reaching_;   // trim's buffer: the neighbours that can reach a face
+  std::vector<std::uint32_t> lens_hits_;  // trim's buffer: a lens group's faces whose boxes meet the face's
   std::vector<Neighbour> nbr_;
   std::size_t nbr_count_ = 0;
   // The face being trimmed.
@@ -336,6 +339,7 @@ class AtomTrimmer {
 void AtomTrimmer::load_neighbours(std::uint32_t atom) {
   const auto row = neighbours_.of(atom);
   if (nbr_.size() < row.size()) nbr_.resize(row.size());
+  if (reaching_.size() < row.size()) reaching_.resize(row.size());
   nbr_count_ = row.size();
   for (std::size_t k = 0; k < row.size(); ++k) {
     Neighbour& n = nbr_[k];
@@ -394,6 +398,7 @@ void AtomTrimmer::find_lens(Neighbour& n) {
     // The faces whose balls meet the shell, listed without a branch per face (which faces
     // do is unpredictable), then tested on their corners.
     lens_candidates_.resize(block_faces);
+    if (lens_hits_.size() < block_faces) lens_hits_.resize(block_faces);  // a group lies in one block
     std::uint32_t candidates = 0;
     for (std::uint32_t g = b * block_faces; g < (b + 1) * block_faces; ++g) {
       lens_candidates_[candidates] = g;
@@ -752,12 +757,19 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       const std::uint32_t ni = deepest_[tri[k]];
       if (ni != ~0u && deep_inside(nbr_[ni])) dropped = true;
     }
-    for (std::uint32_t ni = 0; ni < nbr_count_ && !dropped; ++ni) {
-      if (!f_box_.overlaps(nbr_[ni].box) || !box_meets_ball(f_box_, nbr_[ni].centre, nbr_[ni].circumradius)) continue;
-      if (deep_inside(nbr_[ni])) {
+    // The neighbours that can reach the face, listed without a branch per neighbour (which
+    // ones do is unpredictable); then, in order, one that buries it ends the search.
+    std::uint32_t reaching = 0;
+    if (!dropped)
+      for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
+        reaching_[reaching] = ni;
+        reaching += f_box_.overlaps(nbr_[ni].box) & box_meets_ball(f_box_, nbr_[ni].centre, nbr_[ni].circumradius);
+      }
+    for (std::uint32_t k = 0; k < reaching && !dropped; ++k) {
+      if (deep_inside(nbr_[reaching_[k]])) {
         dropped = true;
       } else {
-        work_.near.push_back(ni);
+        work_.near.push_back(reaching_[k]);
       }
     }
     if (dropped) {
@@ -772,8 +784,13 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       bool meets = false;
       for (std::size_t group = 0, l = 0; group < n.group_end.size(); l = n.group_end[group++]) {
         if (!n.group_box[group].overlaps(f_box_)) continue;
-        for (; l < n.group_end[group]; ++l)
-          if (n.lens_boxes[l].overlaps(f_box_) && trace(ni, n.lens[l])) meets = true;
+        // The lens faces whose boxes meet the face's, listed without a branch each, traced in order.
+        std::uint32_t hits = 0;
+        for (; l < n.group_end[group]; ++l) {
+          lens_hits_[hits] = n.lens[l];
+          hits += n.lens_boxes[l].overlaps(f_box_);
+        }
+        for (std::uint32_t k = 0; k < hits; ++k) meets |= trace(ni, lens_hits_[k]);
       }
       if (meets) {
         work_.relevant.push_back(ni);
