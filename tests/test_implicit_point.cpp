@@ -172,6 +172,22 @@ TEST(ImplicitPoint, MixedExplicitAndImplicitOrientation) {
 namespace molsurf::geometry {
 namespace {
 
+// Signs and orders are certain only when the intervals exclude zero / each other; a
+// touching bound or a NaN leaves them open.
+TEST(Interval, CertainSignAndOrder) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(Interval(1, 2).certain_sign(), 1);
+  EXPECT_EQ(Interval(-2, -1).certain_sign(), -1);
+  EXPECT_EQ(Interval(0, 1).certain_sign(), 0);
+  EXPECT_EQ(Interval(-1, 0).certain_sign(), 0);
+  EXPECT_EQ(Interval(nan, nan).certain_sign(), 0);
+  EXPECT_EQ(certain_order(Interval(1, 2), Interval(3, 4)), -1);
+  EXPECT_EQ(certain_order(Interval(3, 4), Interval(1, 2)), 1);
+  EXPECT_EQ(certain_order(Interval(1, 3), Interval(3, 4)), 0);  // touching
+  EXPECT_EQ(certain_order(Interval(1, 5), Interval(2, 3)), 0);  // nested
+  EXPECT_EQ(certain_order(Interval(nan, nan), Interval(1, 2)), 0);
+}
+
 TEST(Interval, OutwardRoundingMovesOneOrTwoSteps) {
   const double inf = std::numeric_limits<double>::infinity();
   const double max = std::numeric_limits<double>::max();

@@ -24,7 +24,7 @@ namespace {
 // Exact comparison of one coordinate of two implicit points.
 int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int axis) {
   const geometry::Interval &a = p.coordinate(axis), &b = q.coordinate(axis);
-  if ((a.hi < b.lo) | (b.hi < a.lo)) return (b.hi < a.lo) - (a.hi < b.lo);  // apart: one predictable branch
+  if (const int order = geometry::certain_order(a, b)) return order;
   const int e = geometry::common_exponent_of({&p, &q});
   const int s = geometry::compare_homogeneous(p.small_homogeneous(e), q.small_homogeneous(e), axis);
   if (s != geometry::kSmallOverflow) return s;
@@ -113,7 +113,7 @@ int FacePoints::orient(int a, int b, int c) const {
 
 int FacePoints::compare(int a, int b, int axis) const {
   const geometry::Interval &x = point(a).coordinate(axis), &y = point(b).coordinate(axis);
-  if ((x.hi < y.lo) | (y.hi < x.lo)) return (y.hi < x.lo) - (x.hi < y.lo);  // as compare_coordinate
+  if (const int order = geometry::certain_order(x, y)) return order;
   if (const int s = geometry::compare_homogeneous(small(a), small(b), axis); s != geometry::kSmallOverflow) return s;
   return geometry::compare_homogeneous(exact(a), exact(b), axis);
 }

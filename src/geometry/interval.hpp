@@ -37,6 +37,10 @@ inline double up(double v) {
 inline double down(double v) { return -up(-v); }
 }  // namespace interval_detail
 
+// -1 / +1 when every value of a lies below / above every value of b; 0 when they overlap
+// (or a bound is NaN). Without a branch on the order, which is unpredictable.
+inline int certain_order(const Interval& a, const Interval& b) { return (b.hi < a.lo) - (a.hi < b.lo); }
+
 inline Interval operator+(const Interval& a, const Interval& b) {
   return {interval_detail::down(a.lo + b.lo), interval_detail::up(a.hi + b.hi)};
 }

@@ -24,7 +24,7 @@ bool within(const std::vector<std::int32_t>& x, const std::vector<std::int32_t>&
 
 // take(a, b) for every edge (a, b) of every living face, in its face's direction, in
 // parallel; what it returns (an optional) gathered from all threads, in an order that
-// depends on them: callers sort it or take an order statistic.
+// depends on them: the caller sorts it.
 template <class Take>
 auto gather_edges(const Mesh& m, const MeshEditor& editor, Take take) {
   using Value = typename std::invoke_result_t<Take, Index, Index>::value_type;
