@@ -36,6 +36,33 @@ TEST(AtomPolyhedra, BallsBoundEveryVertexAndFacePlane) {
   }
 }
 
+// The one-pass union drops a block of faces whole when its ball lies in a neighbour's
+// inscribed ball: every vertex of the block's faces must lie in that ball, as computed.
+TEST(AtomPolyhedra, BlockBallsHoldTheirFaces) {
+  for (const double density : {0.3, 2.0, 4.0}) {
+    const std::vector<Atom> atoms{testing::atom_at({1.5, -2, 30}, 1.7), testing::atom_at({-4000, 7.25, 3}, 1.0)};
+    SphereOptions options;
+    options.density = density;
+    const AtomPolyhedra polyhedra(atoms, options);
+    for (std::size_t a = 0; a < atoms.size(); ++a) {
+      std::vector<Vec3> vertices;
+      polyhedra.vertices(a, vertices);
+      const PolyhedronTemplate& shape = polyhedra.shape(a);
+      const std::size_t block_faces = static_cast<std::size_t>(shape.frequency) * shape.frequency;
+      ASSERT_EQ(shape.unit.faces.size(), 20 * block_faces);
+      const double scale = polyhedra.scale(a);
+      for (std::size_t f = 0; f < shape.unit.faces.size(); ++f) {
+        const std::size_t b = f / block_faces;
+        const Vec3 centre = polyhedra.centre(a) + shape.block_centre[b] * scale;
+        const double radius = shape.block_radius[b] * scale + 2 * polyhedra.vertex_error(a);
+        for (Index v : shape.unit.faces[f]) EXPECT_LE(norm(vertices[v] - centre), radius) << "face " << f;
+      }
+      // A block is one icosahedron face's share: far smaller than the polyhedron.
+      for (std::size_t b = 0; b < 20; ++b) EXPECT_LT(shape.block_radius[b], 0.7) << b;
+    }
+  }
+}
+
 TEST(AtomPolyhedra, BallsSettleOnlyWhatTheWholeBoxSays) {
   const Vec3 c{10, 20, 30};
   const double inner = 1.5, outer = 2;

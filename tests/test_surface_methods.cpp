@@ -13,6 +13,7 @@
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/atom_polyhedra.hpp"
 #include "surface_methods.hpp"
 
 namespace molsurf {
@@ -128,6 +129,28 @@ TEST(SurfaceMethods, SymmetricShells) {
         }
       EXPECT_TRUE(testing::methods_agree(atoms, spheres(1.4, 2))) << "d " << d << " r " << r;
     }
+}
+
+// A neighbour moved along the direction of a block of faces towards the placement where
+// its inscribed ball starts to hold that block's ball (the block is then dropped whole),
+// and a hair either side of it.
+TEST(SurfaceMethods, BlocksAtTheEdgeOfBeingBuried) {
+  const SphereOptions o = spheres(1.4, 2);
+  const std::vector<Atom> pair{atom_at({0, 0, 0}, 1.6), atom_at({0, 0, 0}, 1.8)};
+  const surface_detail::AtomPolyhedra polyhedra(pair, o);
+  const surface_detail::PolyhedronTemplate& shape = polyhedra.shape(0);
+  for (const std::size_t b : {0, 7, 19}) {
+    const Vec3 towards = shape.block_centre[b] * polyhedra.scale(0);
+    const double radius = shape.block_radius[b] * polyhedra.scale(0) + 2 * polyhedra.vertex_error(0);
+    // The neighbour's centre on the block's axis, its inscribed ball just holding the block's ball.
+    const double buried_from = norm(towards) - (polyhedra.inradius(1) - radius);
+    ASSERT_GT(buried_from, 0);
+    for (const double d : {buried_from - 0.6 * radius, buried_from - 0.3 * radius, buried_from - 0.1 * radius,
+                           buried_from - 1e-9, buried_from, buried_from + 1e-9, buried_from + 0.05}) {
+      const std::vector<Atom> atoms{pair[0], atom_at(towards * (d / norm(towards)), 1.8)};
+      EXPECT_TRUE(testing::methods_agree(atoms, o)) << "block " << b << " at " << d;
+    }
+  }
 }
 
 TEST(SurfaceMethods, NestedAtomsLeaveOnlyTheOuter) {

@@ -77,17 +77,6 @@ PolyhedronTemplate make_template(int frequency) {
     t.block_centre[b] = centre;
     t.block_radius[b] = radius * (1 + 1e-9);
   }
-  t.block_vertices_first.assign(1, 0);
-  for (int b = 0; b < 20; ++b) {
-    const std::size_t block = static_cast<std::size_t>(b) * n * n;
-    std::vector<std::uint32_t> vertices;
-    for (std::size_t f = block; f < block + n * n; ++f)
-      for (Index v : t.unit.faces[f]) vertices.push_back(v);
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    t.block_vertices.insert(t.block_vertices.end(), vertices.begin(), vertices.end());
-    t.block_vertices_first.push_back(static_cast<std::uint32_t>(t.block_vertices.size()));
-  }
   return t;
 }
 

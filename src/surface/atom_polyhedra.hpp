@@ -31,9 +31,6 @@ struct PolyhedronTemplate {
   // The same per block of faces from one icosahedron face (faces b n^2 .. (b+1) n^2 - 1).
   std::array<Vec3, 20> block_centre;
   std::array<double, 20> block_radius;
-  // The vertices of each block's faces (compressed rows; a vertex on a block's border is
-  // in every block it borders).
-  std::vector<std::uint32_t> block_vertices_first, block_vertices;
   // Faces around each vertex (compressed rows).
   std::vector<std::uint32_t> vertex_faces_first, vertex_faces;
 

@@ -306,7 +306,7 @@ class AtomTrimmer {
  private:
   void load_neighbours(std::uint32_t atom);
   void find_lens(Neighbour& n);
-  void find_deepest();
+  void find_covering();
   // The trace of neighbour face g on face f: adds the points of f ∩ g and, when they span a
   // segment, the segment. Returns false if they do not meet.
   bool trace(std::uint32_t n, std::uint32_t g);
@@ -319,8 +319,11 @@ class AtomTrimmer {
   std::uint32_t atom_ = 0;
   Vec3 centre_;
   std::vector<Vec3> vertices_;
-  std::vector<std::uint32_t> deepest_;  // per vertex: the neighbour whose inscribed ball holds it most deeply, or ~0
-  std::vector<double> depth_;
+  // Per block of faces: the neighbours whose inscribed balls hold the block's centre most
+  // deeply (~0 where fewer reach it), and whether the first holds the whole block.
+  static constexpr int kCovering = 3;
+  std::array<std::array<std::uint32_t, kCovering>, 20> covering_{};
+  std::array<std::uint8_t, 20> buried_{};
   std::vector<std::uint32_t> corner_id_;  // per vertex: its id among the atom's points, or ~0
   std::vector<std::uint32_t> lens_candidates_;  // find_lens's buffer
   std::vector<std::uint32_t> reaching_;   // trim's buffer: the neighbours that can reach a face
@@ -421,32 +424,32 @@ void AtomTrimmer::find_lens(Neighbour& n) {
   }
 }
 
-void AtomTrimmer::find_deepest() {
-  const std::size_t count = vertices_.size();
-  deepest_.assign(count, ~0u);
-  depth_.assign(count, 0.0);
+void AtomTrimmer::find_covering() {
   const PolyhedronTemplate& shape = polyhedra_.shape(atom_);
   const double scale = polyhedra_.scale(atom_), error = polyhedra_.vertex_error(atom_);
-  for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
-    const Vec3 c = nbr_[ni].centre;
-    // (r^2 - d^2) / 2r: close to r - d, the depth, without a root (an ordering only).
-    const double r = nbr_[ni].inradius, r2 = r * r, half_over_r = 0.5 / r;
-    for (std::uint32_t b = 0; b < 20; ++b) {
-      // Blocks whose ball misses the neighbour's inscribed ball hold no vertex inside it.
-      const Vec3 to_block = centre_ + shape.block_centre[b] * scale - c;
-      const double reach = r + shape.block_radius[b] * scale + 2 * error;
-      if (dot(to_block, to_block) >= reach * reach) continue;
-      for (std::uint32_t k = shape.block_vertices_first[b]; k < shape.block_vertices_first[b + 1]; ++k) {
-        const std::uint32_t v = shape.block_vertices[k];
-        const Vec3 d = vertices_[v] - c;
-        // Not positive outside the ball, so never above a depth found (at least 0); chosen
-        // without a branch (whether a vertex is deeper here is unpredictable).
-        const double depth = (r2 - dot(d, d)) * half_over_r;
-        const bool deeper = depth > depth_[v];
-        depth_[v] = deeper ? depth : depth_[v];
-        deepest_[v] = deeper ? ni : deepest_[v];
+  for (std::uint32_t b = 0; b < 20; ++b) {
+    const Vec3 centre = centre_ + shape.block_centre[b] * scale;
+    // Every vertex of the block lies within `radius` of `centre` (rounding included).
+    const double radius = shape.block_radius[b] * scale + 2 * error;
+    std::array<double, kCovering> best_depth;
+    best_depth.fill(-std::numeric_limits<double>::infinity());
+    covering_[b].fill(~0u);
+    for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
+      const Vec3 d = centre - nbr_[ni].centre;
+      const double depth = nbr_[ni].inradius - std::sqrt(dot(d, d));
+      if (!(depth > best_depth[kCovering - 1])) continue;
+      int k = kCovering - 1;
+      for (; k > 0 && depth > best_depth[k - 1]; --k) {
+        best_depth[k] = best_depth[k - 1];
+        covering_[b][k] = covering_[b][k - 1];
       }
+      best_depth[k] = depth;
+      covering_[b][k] = ni;
     }
+    // The block's ball inside the first one's inscribed ball, with a margin far beyond the
+    // rounding of the distance, so that every corner passes the cull's own test too.
+    const double size = radius + std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
+    buried_[b] = best_depth[0] > radius + 1e-12 * size;
   }
 }
 
@@ -729,9 +732,16 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   PointTable table;
   const PolyhedronTemplate& shape = polyhedra_.shape(atom);
   crossings_ = 0;
-  find_deepest();
+  find_covering();
+  const std::uint32_t block_faces = static_cast<std::uint32_t>(shape.frequency * shape.frequency);
   corner_id_.assign(vertices_.size(), ~0u);
   for (std::uint32_t f = 0; f < shape.unit.faces.size(); ++f) {
+    const std::uint32_t block = f / block_faces;
+    if (buried_[block]) {  // f is the block's first face: the whole block is inside a neighbour
+      out.faces_inside += block_faces;
+      f += block_faces - 1;
+      continue;
+    }
     const Triangle& tri = shape.unit.faces[f];
     face_ = f;
     for (int k = 0; k < 3; ++k) {
@@ -752,9 +762,9 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       }
       return inside;
     };
-    // The neighbours that hold the corners most deeply usually hold the whole face.
-    for (int k = 0; k < 3 && !dropped; ++k) {
-      const std::uint32_t ni = deepest_[tri[k]];
+    // The neighbours that hold the face's block most deeply usually hold the face.
+    for (int k = 0; k < kCovering && !dropped; ++k) {
+      const std::uint32_t ni = covering_[block][k];
       if (ni != ~0u && deep_inside(nbr_[ni])) dropped = true;
     }
     // The neighbours that can reach the face, listed without a branch per neighbour (which
