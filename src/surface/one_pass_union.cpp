@@ -213,8 +213,7 @@ struct FaceWork {
     relevant.clear();
   }
 
-  ImplicitPoint constructed(const PointDefinition& d, const AtomPolyhedra& polyhedra) {
-    if (d.kind != PointDefinition::Kind::line_plane || d.id[0] != atom) return construct(d, polyhedra);
+  const ImplicitPoint& own_edge_point(const PointDefinition& d, const AtomPolyhedra& polyhedra) {
     if (const auto it = own_edge_points.find(d); it != own_edge_points.end()) return it->second;
     return own_edge_points.emplace(d, construct(d, polyhedra)).first->second;
   }
@@ -230,17 +229,21 @@ struct FaceWork {
     };
     for (std::uint32_t k = 0; k < points.size(); ++k)
       if (definitions[k] == d) return merge(k);
-    const ImplicitPoint x = constructed(d, polyhedra);
-    for (std::uint32_t k = 0; k < points.size(); ++k)
-      if (geometry::same_point(points[k], x)) return merge(k);
-    points.push_back(x);
-    definitions.push_back(d);
-    places.push_back(place);
-    if (on_neighbour.size() < points.size()) on_neighbour.emplace_back();
-    auto& on = on_neighbour[points.size() - 1];
-    on.clear();
-    if (neighbour != ~0u) on.push_back(neighbour);
-    return static_cast<std::uint32_t>(points.size() - 1);
+    // A point is copied once, into `points` (it is large: its defining points and its box).
+    auto add_new = [&](const ImplicitPoint& x) {
+      for (std::uint32_t k = 0; k < points.size(); ++k)
+        if (geometry::same_point(points[k], x)) return merge(k);
+      points.push_back(x);
+      definitions.push_back(d);
+      places.push_back(place);
+      if (on_neighbour.size() < points.size()) on_neighbour.emplace_back();
+      auto& on = on_neighbour[points.size() - 1];
+      on.clear();
+      if (neighbour != ~0u) on.push_back(neighbour);
+      return static_cast<std::uint32_t>(points.size() - 1);
+    };
+    if (d.kind == PointDefinition::Kind::line_plane && d.id[0] == atom) return add_new(own_edge_point(d, polyhedra));
+    return add_new(construct(d, polyhedra));
   }
 };
 
@@ -436,7 +439,9 @@ void AtomTrimmer::find_covering() {
     covering_[b].fill(~0u);
     for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
       const Vec3 d = centre - nbr_[ni].centre;
-      const double depth = nbr_[ni].inradius - std::sqrt(dot(d, d));
+      const double reach = nbr_[ni].inradius + radius, dist2 = dot(d, d);
+      if (!(dist2 < reach * reach)) continue;  // its inscribed ball holds no vertex of the block
+      const double depth = nbr_[ni].inradius - std::sqrt(dist2);
       if (!(depth > best_depth[kCovering - 1])) continue;
       int k = kCovering - 1;
       for (; k > 0 && depth > best_depth[k - 1]; --k) {
@@ -743,13 +748,7 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       continue;
     }
     const Triangle& tri = shape.unit.faces[f];
-    face_ = f;
-    for (int k = 0; k < 3; ++k) {
-      f_index_[k] = tri[k];
-      f_[k] = vertices_[tri[k]];
-    }
-    f_box_ = box_of(f_[0], f_[1], f_[2]);
-    work_.clear();
+    for (int k = 0; k < 3; ++k) f_[k] = vertices_[tri[k]];
     // Cull (§2.2.1): a face whose corners are inside a neighbour's inscribed ball is
     // inside it (the ball is inside the convex polyhedron).
     bool dropped = false;
@@ -767,14 +766,21 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
       const std::uint32_t ni = covering_[block][k];
       if (ni != ~0u && deep_inside(nbr_[ni])) dropped = true;
     }
+    if (dropped) {
+      ++out.faces_inside;
+      continue;
+    }
+    face_ = f;
+    f_index_ = tri;
+    f_box_ = box_of(f_[0], f_[1], f_[2]);
+    work_.clear();
     // The neighbours that can reach the face, listed without a branch per neighbour (which
     // ones do is unpredictable); then, in order, one that buries it ends the search.
     std::uint32_t reaching = 0;
-    if (!dropped)
-      for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
-        reaching_[reaching] = ni;
-        reaching += f_box_.overlaps(nbr_[ni].box) & box_meets_ball(f_box_, nbr_[ni].centre, nbr_[ni].circumradius);
-      }
+    for (std::uint32_t ni = 0; ni < nbr_count_; ++ni) {
+      reaching_[reaching] = ni;
+      reaching += f_box_.overlaps(nbr_[ni].box) & box_meets_ball(f_box_, nbr_[ni].centre, nbr_[ni].circumradius);
+    }
     for (std::uint32_t k = 0; k < reaching && !dropped; ++k) {
       if (deep_inside(nbr_[reaching_[k]])) {
         dropped = true;
