@@ -2,6 +2,7 @@
 // The editing layer's spatial index of faces: which faces lie near a box, while the faces
 // change (src/mesh/mesh_editor.hpp; the cleanup's crossing tests).
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -25,7 +26,8 @@ class FaceGrid {
  public:
   // Cells of side `cell`, enlarged until the grid has at most about 4 cells per face (a
   // surface fills few of a volume's cells; the capsid would otherwise need 64 M).
-  FaceGrid(const Mesh& m, double cell) : m_(m), box_(m.faces.size()), in_flat_(m.faces.size(), 1) {
+  FaceGrid(const Mesh& m, double cell)
+      : m_(m), box_(std::make_unique_for_overwrite<StoredBox[]>(m.faces.size())), in_flat_(m.faces.size(), 1) {
     const BoundingBox all = bounding_box(m);
     origin_ = all.empty() ? Vec3{} : all.min;
     const Vec3 extent = all.empty() ? Vec3{} : all.max - all.min;
@@ -48,15 +50,15 @@ class FaceGrid {
     const auto nf = static_cast<std::int64_t>(m.faces.size());
 #pragma omp parallel for schedule(static)
     for (std::int64_t f = 0; f < nf; ++f) {
-      box_[f] = bounding_box(m, static_cast<std::size_t>(f));
-      for_cells(box_[f], [&](std::uint64_t c) { std::atomic_ref(start_[c + 1]).fetch_add(1, std::memory_order_relaxed); });
+      box_[f] = StoredBox::of(bounding_box(m, static_cast<std::size_t>(f)));
+      for_cells(box(f), [&](std::uint64_t c) { std::atomic_ref(start_[c + 1]).fetch_add(1, std::memory_order_relaxed); });
     }
     for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
     flat_.resize(start_[cells]);
     std::vector<std::uint64_t> fill(start_.begin(), start_.end() - 1);
 #pragma omp parallel for schedule(static)
     for (std::int64_t f = 0; f < nf; ++f)
-      for_cells(box_[f], [&](std::uint64_t c) {
+      for_cells(box(f), [&](std::uint64_t c) {
         flat_[std::atomic_ref(fill[c]).fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(f);
       });
   }
@@ -67,19 +69,24 @@ class FaceGrid {
       in_flat_[f] = 0;  // its flat entries are skipped from now on
       return;
     }
-    for_cells(box_[f], [&](std::uint64_t c) { std::erase(*moved_[shard_of(c)], Moved{c, f}); });
+    for_cells(box(f), [&](std::uint64_t c) { std::erase(*moved_[shard_of(c)], Moved{c, f}); });
   }
   // After face f changed (or came back): indexed at its present corners.
   void insert(std::uint32_t f) {
-    box_[f] = bounding_box(m_, f);
-    for_cells(box_[f], [&](std::uint64_t c) {
+    box_[f] = StoredBox::of(bounding_box(m_, f));
+    for_cells(box(f), [&](std::uint64_t c) {
       auto& list = moved_[shard_of(c)];
       if (!list) list = std::make_unique<std::vector<Moved>>();
       list->push_back({c, f});
     });
   }
 
-  const BoundingBox& box(std::uint32_t f) const { return box_[f]; }
+  BoundingBox box(std::uint32_t f) const {
+    BoundingBox b;
+    b.min = {box_[f].min[0], box_[f].min[1], box_[f].min[2]};
+    b.max = {box_[f].max[0], box_[f].max[1], box_[f].max[2]};
+    return b;
+  }
   double cell_size() const { return cell_; }
   // Insertions and erasures in one box and queries in another may run at the same time
   // when the two boxes are this far apart on some axis (their cells then fall in
@@ -134,7 +141,14 @@ class FaceGrid {
   Vec3 origin_;
   double cell_ = 1, inverse_cell_ = 1;
   std::int64_t size_[3] = {1, 1, 1}, shards_size_[3] = {1, 1, 1};
-  std::vector<BoundingBox> box_;          // per face, as indexed
+  // A face's box as indexed. Trivial, so the array is left unwritten until the parallel
+  // loop fills it (a serial first write of a large array costs more than its filling: each
+  // new page is a fault).
+  struct StoredBox {
+    std::array<double, 3> min, max;
+    static StoredBox of(const BoundingBox& b) { return {{b.min.x, b.min.y, b.min.z}, {b.max.x, b.max.y, b.max.z}}; }
+  };
+  std::unique_ptr<StoredBox[]> box_;      // per face
   std::vector<std::uint64_t> start_;      // per cell of the dense grid: its range in flat_
   std::vector<std::uint32_t> flat_;       // the faces as they were at construction
   std::vector<std::uint8_t> in_flat_;     // per face: its flat entries still hold

@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <numeric>
 #include <vector>
 
 #include <omp.h>
@@ -177,17 +178,26 @@ class Sweep {
         r.area_share = area_share;
         r.volume_sharers = &volume_sharers_;
       }
+      // The cells with the most faces first: the threads then end the colour together. The
+      // order of the work does not change its result (the cells' regions are apart).
+      std::vector<std::size_t> by_size(cells);
+      std::iota(by_size.begin(), by_size.end(), std::size_t{0});
+      std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t x, std::size_t y) {
+        return cell_start[x + 1] - cell_start[x] > cell_start[y + 1] - cell_start[y];
+      });
       std::vector<WorkResult> results(cells);
       ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 1)
-      for (std::int64_t k = 0; k < static_cast<std::int64_t>(cells); ++k)
-        errors.run(k, [&] {
+      for (std::int64_t i = 0; i < static_cast<std::int64_t>(cells); ++i) {
+        const std::size_t k = by_size[static_cast<std::size_t>(i)];
+        errors.run(static_cast<std::int64_t>(k), [&] {
           Cleaner& worker = *workers_[static_cast<std::size_t>(omp_get_thread_num())];
           worker.begin(&regions[k]);
           for (std::size_t q = cell_start[k]; q < cell_start[k + 1]; ++q)
             worker.improve(distorted[entries[q].position].second, entries[q].position);
           results[k] = worker.finish();
         });
+      }
       errors.rethrow();
       for (WorkResult& r : results) {
         done += r.done;
