@@ -32,7 +32,9 @@ BoundingBox face_box(const Mesh& mesh, std::size_t face);
 
 class BoxBvh {
  public:
-  static constexpr std::uint32_t kLeafSize = 4;
+  // Leaves of 16: a face's query descends fewer levels and scans a few more boxes (the
+  // 2hhb surface's check: 0.140 s with leaves of 4, 0.131 with 8, 0.128 with 16 to 32).
+  static constexpr std::uint32_t kLeafSize = 16;
 
   BoxBvh() = default;
   // Item ids are positions in `boxes`.
