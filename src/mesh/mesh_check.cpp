@@ -331,7 +331,7 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std
 #pragma omp parallel reduction(+ : intersecting, contacts) if (count >= kParallelMinItems / 16)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
-#pragma omp for schedule(dynamic, 1024)
+#pragma omp for schedule(dynamic, 256)
     for (std::int64_t k = 0; k < count; ++k)
       errors.run(k, [&] {
         bvh.for_each_pair_at_leaf(static_cast<std::size_t>(k), [&](std::uint32_t face_i, std::uint32_t j) {
