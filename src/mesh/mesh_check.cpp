@@ -328,7 +328,7 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
   const auto count = static_cast<std::int64_t>(bvh.leaf_count());
   ParallelExceptions errors;
-#pragma omp parallel reduction(+ : intersecting, contacts) if (count >= kParallelMinItems / 16)
+#pragma omp parallel reduction(+ : intersecting, contacts) if (count >= kParallelMinItems / 64)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
 #pragma omp for schedule(dynamic, 256)
