@@ -12,6 +12,9 @@
 //  - Duplicate faces: the same vertex set as an earlier face (either orientation).
 //  - Self-intersections: all face pairs whose closed boxes overlap, classified exactly by
 //    geometry::classify_triangle_pair (contacts are counted apart and are not defects).
+//    In a closed, manifold, consistently oriented mesh, a pair that shares a corner whose
+//    star is proved embedded (mesh/embedded_stars.hpp) meets only where it shares it, and
+//    is not tested.
 //  - Inward components: a component (faces connected through shared vertices) inside an
 //    odd number of other components (exact ray parity, geometry/ray_parity.hpp) is a
 //    cavity and must have negative volume; any other must have positive volume. When the
@@ -50,6 +53,7 @@
 #include "molsurf/error.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "mesh/component_volume.hpp"
+#include "mesh/embedded_stars.hpp"
 #include "common/parallel_threshold.hpp"
 
 namespace molsurf {
@@ -204,24 +208,33 @@ std::size_t small_fan_count(const Mesh& mesh, Index v, std::span<const std::uint
 // Marks used vertices and counts, per vertex, the fans its faces form: faces around v
 // are joined when they share an edge (v, w), i.e. the components of v's link graph whose
 // nodes are the other corners w and whose edges are the faces.
-void check_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topological, std::size_t max_examples,
-                    MeshCheck& result) {
+// The faces around each vertex, faces with a repeated corner left out.
+VertexFaces faces_around_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topological) {
   const std::size_t nv = mesh.vertices.size();
-  std::vector<std::uint32_t> start(nv + 1, 0);
+  VertexFaces around;
+  around.start.assign(nv + 1, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!topological[f]) continue;
+    for (const Index v : mesh.faces[f]) ++around.start[v + 1];
+  }
+  std::partial_sum(around.start.begin(), around.start.end(), around.start.begin());
+  around.faces.resize(around.start[nv]);
+  std::vector<std::uint32_t> fill(around.start.begin(), around.start.end() - 1);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!topological[f]) continue;
+    for (const Index v : mesh.faces[f]) around.faces[fill[v]++] = static_cast<std::uint32_t>(f);
+  }
+  return around;
+}
+
+void check_vertices(const Mesh& mesh, const VertexFaces& around, std::size_t max_examples, MeshCheck& result) {
+  const std::size_t nv = mesh.vertices.size();
   std::vector<std::uint8_t> used(nv, 0);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    for (const Index v : mesh.faces[f]) used[v] = 1;
-    if (!topological[f]) continue;
-    for (const Index v : mesh.faces[f]) ++start[v + 1];
-  }
+  for (const Triangle& t : mesh.faces)
+    for (const Index v : t) used[v] = 1;
   result.unused_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> incident(start[nv]);
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    if (!topological[f]) continue;
-    for (const Index v : mesh.faces[f]) incident[fill[v]++] = static_cast<std::uint32_t>(f);
-  }
+  const std::vector<std::uint32_t>& start = around.start;
+  const std::vector<std::uint32_t>& incident = around.faces;
 
   std::size_t nonmanifold = 0;
   LowestIndices examples(max_examples);
@@ -320,9 +333,10 @@ std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8
   return duplicates;
 }
 
-// `bvh` holds the faces that are not degenerate.
-void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std::size_t max_examples,
-                              MeshCheck& result) {
+// `bvh` holds the faces that are not degenerate. Pairs that share a corner whose star is
+// proved embedded (`embedded`, per vertex; may be empty) meet only where they share it.
+void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std::span<const std::uint8_t> embedded,
+                              std::size_t max_examples, MeshCheck& result) {
 
   std::size_t intersecting = 0, contacts = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
@@ -335,6 +349,7 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std
     for (std::int64_t k = 0; k < count; ++k)
       errors.run(k, [&] {
         bvh.for_each_pair_at_leaf(static_cast<std::size_t>(k), [&](std::uint32_t face_i, std::uint32_t j) {
+          if (!embedded.empty() && share_embedded_star(mesh, embedded, face_i, j)) return;
           switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
             case geometry::TrianglePairRelation::intersecting:
               ++intersecting;
@@ -542,7 +557,8 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
                                  ? count_duplicate_faces_on_two_face_edges(mesh, edges)
                                  : count_duplicate_faces(mesh, topological);
   }
-  check_vertices(mesh, topological, options.max_examples, result);
+  const VertexFaces around = faces_around_vertices(mesh, topological);
+  check_vertices(mesh, around, options.max_examples, result);
   // With every face's corners distinct, the edge table's edges are the mesh's: V - E + F
   // without sorting the edges a second time.
   if (all_topological)
@@ -566,7 +582,13 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
       }
       return *tree;
     };
-    if (options.self_intersections) check_self_intersections(mesh, face_tree(), options.max_examples, result);
+    if (options.self_intersections) {
+      // Each star one closed, consistently oriented fan: the embedded ones can be proved.
+      std::vector<std::uint8_t> embedded;
+      if (all_topological && result.closed() && result.manifold() && result.oriented())
+        embedded = embedded_stars(mesh, around);
+      check_self_intersections(mesh, face_tree(), embedded, options.max_examples, result);
+    }
     check_components(mesh, face_tree, result);
   }
 
