@@ -1,6 +1,7 @@
 #include "molsurf/mesh.hpp"
 
 #include "mesh/topology.hpp"
+#include "common/block_reduce.hpp"
 #include "common/parallel_threshold.hpp"
 
 #include <parallel/algorithm>
@@ -65,9 +66,10 @@ Vec3 area_vector(const Mesh& mesh, std::size_t face) {  // twice the area, along
 double face_area(const Mesh& mesh, std::size_t face) { return 0.5 * norm(area_vector(mesh, face)); }
 
 double surface_area(const Mesh& mesh) {
-  double total = 0;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) total += face_area(mesh, f);
-  return total;
+  return block_reduce(
+      static_cast<std::int64_t>(mesh.faces.size()), 0.0,
+      [&](double& sum, std::int64_t f) { sum += face_area(mesh, static_cast<std::size_t>(f)); },
+      [](double& total, double block) { total += block; });
 }
 
 double signed_volume(const Mesh& mesh) {
@@ -76,13 +78,16 @@ double signed_volume(const Mesh& mesh) {
   // mesh, and small relative coordinates lose far less to cancellation.
   const BoundingBox box = bounding_box(mesh);
   const Vec3 origin = 0.5 * (box.min + box.max);
-  double six_volume = 0;
-  for (const Triangle& t : mesh.faces) {
-    const Vec3 a = mesh.vertices[t[0]] - origin;
-    const Vec3 b = mesh.vertices[t[1]] - origin;
-    const Vec3 c = mesh.vertices[t[2]] - origin;
-    six_volume += dot(a, cross(b, c));
-  }
+  const double six_volume = block_reduce(
+      static_cast<std::int64_t>(mesh.faces.size()), 0.0,
+      [&](double& sum, std::int64_t f) {
+        const Triangle& t = mesh.faces[static_cast<std::size_t>(f)];
+        const Vec3 a = mesh.vertices[t[0]] - origin;
+        const Vec3 b = mesh.vertices[t[1]] - origin;
+        const Vec3 c = mesh.vertices[t[2]] - origin;
+        sum += dot(a, cross(b, c));
+      },
+      [](double& total, double block) { total += block; });
   return six_volume / 6.0;
 }
 
@@ -176,24 +181,32 @@ Quality mesh_quality(const Mesh& mesh) {
   Quality q;
   q.faces = mesh.faces.size();
   if (q.faces == 0) return q;
-  // The angles in parallel, the sum in face order: the same mean for any thread count.
-  std::vector<double> angle(mesh.faces.size()), aspect(mesh.faces.size());
-  const auto nf = static_cast<std::int64_t>(mesh.faces.size());
-#pragma omp parallel for schedule(static) if (nf >= kParallelMinItems)
-  for (std::int64_t f = 0; f < nf; ++f) {
-    angle[f] = min_angle_deg(mesh, static_cast<std::size_t>(f));
-    aspect[f] = aspect_ratio(mesh, static_cast<std::size_t>(f));
-  }
-  q.min_angle_deg = 180;
-  double sum = 0;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    q.min_angle_deg = std::min(q.min_angle_deg, angle[f]);
-    sum += angle[f];
-    if (angle[f] < 1) ++q.below_1deg;
-    if (angle[f] < 5) ++q.below_5deg;
-    q.max_aspect_ratio = std::max(q.max_aspect_ratio, aspect[f]);
-  }
-  q.mean_min_angle_deg = sum / static_cast<double>(q.faces);
+  struct Part {
+    double min_angle = 180, sum = 0, max_aspect = 0;
+    std::size_t below_1 = 0, below_5 = 0;
+  };
+  const Part all = block_reduce(
+      static_cast<std::int64_t>(q.faces), Part{},
+      [&](Part& p, std::int64_t f) {
+        const double angle = min_angle_deg(mesh, static_cast<std::size_t>(f));
+        p.min_angle = std::min(p.min_angle, angle);
+        p.sum += angle;
+        p.below_1 += angle < 1;
+        p.below_5 += angle < 5;
+        p.max_aspect = std::max(p.max_aspect, aspect_ratio(mesh, static_cast<std::size_t>(f)));
+      },
+      [](Part& total, const Part& p) {
+        total.min_angle = std::min(total.min_angle, p.min_angle);
+        total.sum += p.sum;
+        total.below_1 += p.below_1;
+        total.below_5 += p.below_5;
+        total.max_aspect = std::max(total.max_aspect, p.max_aspect);
+      });
+  q.min_angle_deg = all.min_angle;
+  q.below_1deg = all.below_1;
+  q.below_5deg = all.below_5;
+  q.max_aspect_ratio = all.max_aspect;
+  q.mean_min_angle_deg = all.sum / static_cast<double>(q.faces);
   return q;
 }
 
