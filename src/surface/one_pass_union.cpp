@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -1098,16 +1099,23 @@ void repair_rounded_points(std::span<const PointDefinition> points, std::span<co
 
 // Directed edges (u, v) without their reverse: 0 for a closed surface. The reverse is
 // found among the few edges that leave v (edges bucketed by their first vertex).
+// The buckets are counted and filled in parallel: the order within a bucket depends on the
+// threads, the count does not.
 std::size_t count_open_edges(const Mesh& mesh, int threads) {
   std::vector<std::uint32_t> first(mesh.vertices.size() + 1, 0);
-  for (const Triangle& t : mesh.faces)
-    for (const Index v : t) ++first[v + 1];
+  const auto face_total = static_cast<std::int64_t>(mesh.faces.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t f = 0; f < face_total; ++f)
+    for (const Index v : mesh.faces[f]) std::atomic_ref(first[v + 1]).fetch_add(1, std::memory_order_relaxed);
   std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<Index> to(first.back());
+  const auto to = std::make_unique_for_overwrite<Index[]>(first.back());  // first written in parallel
   {
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (const Triangle& t : mesh.faces)
-      for (int k = 0; k < 3; ++k) to[fill[t[k]]++] = t[(k + 1) % 3];
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t f = 0; f < face_total; ++f) {
+      const Triangle& t = mesh.faces[f];
+      for (int k = 0; k < 3; ++k) to[std::atomic_ref(fill[t[k]]).fetch_add(1, std::memory_order_relaxed)] = t[(k + 1) % 3];
+    }
   }
   std::size_t open_edges = 0;
   const auto vertex_total = static_cast<std::int64_t>(mesh.vertices.size());
@@ -1115,8 +1123,8 @@ std::size_t count_open_edges(const Mesh& mesh, int threads) {
   for (std::int64_t u = 0; u < vertex_total; ++u)
     for (std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
       const Index v = to[k];
-      if (std::find(to.begin() + first[v], to.begin() + first[v + 1], static_cast<Index>(u)) == to.begin() + first[v + 1])
-        ++open_edges;
+      const Index *begin = to.get() + first[v], *end = to.get() + first[v + 1];
+      if (std::find(begin, end, static_cast<Index>(u)) == end) ++open_edges;
     }
   return open_edges;
 }
