@@ -15,10 +15,12 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/parallel_threshold.hpp"
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
 #include "molsurf/error.hpp"
@@ -32,15 +34,24 @@ constexpr std::size_t kBlockSize = 32768;  // VTK's default
 // One array of the appended section: its XML element up to the offset, its bytes as
 // written by VTK (values in native byte order, strings each followed by a NUL), and
 // those bytes compressed block by block.
+// An array's bytes, left unwritten until a parallel loop fills them (so their pages are
+// first touched in parallel).
+struct Bytes {
+  std::unique_ptr<char[]> data;
+  std::size_t size = 0;
+
+  explicit Bytes(std::size_t n = 0) : data(std::make_unique_for_overwrite<char[]>(n)), size(n) {}
+};
+
 struct AppendedArray {
   std::string element;  // `<DataArray type=... ` or `<Array type=... `; offset and `/>` follow
-  std::vector<char> raw;  // released once compressed
+  Bytes raw;            // released once compressed
   std::size_t raw_size = 0;
   std::vector<std::vector<unsigned char>> blocks;
   int level = 1;  // of compression; 0 stores
   std::uint64_t offset = 0;  // from the start of the appended data
 
-  std::size_t block_count() const { return (raw.size() + kBlockSize - 1) / kBlockSize; }
+  std::size_t block_count() const { return (raw.size + kBlockSize - 1) / kBlockSize; }
   std::uint64_t appended_size() const {
     std::uint64_t size = 8 * (3 + blocks.size());
     for (const auto& b : blocks) size += b.size();
@@ -48,14 +59,20 @@ struct AppendedArray {
   }
 };
 
-template <class T>
-std::vector<char> bytes_of(const std::vector<T>& values) {
-  std::vector<char> raw(values.size() * sizeof(T));
-  if (!raw.empty()) std::memcpy(raw.data(), values.data(), raw.size());
+// value(i) for i in [0, n), as T in native byte order, in parallel.
+template <class T, class Value>
+Bytes bytes_of(std::size_t n, Value&& value) {
+  Bytes raw(n * sizeof(T));
+  const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (count >= kParallelMinItems)
+  for (std::int64_t i = 0; i < count; ++i) {
+    const T v = value(static_cast<std::size_t>(i));
+    std::memcpy(raw.data.get() + static_cast<std::size_t>(i) * sizeof(T), &v, sizeof(T));
+  }
   return raw;
 }
 
-AppendedArray numeric_array(const char* type, const char* name, int components, std::vector<char> raw) {
+AppendedArray numeric_array(const char* type, const char* name, int components, Bytes raw) {
   AppendedArray a;
   a.element = std::string("<DataArray type=\"") + type + "\" Name=\"" + name + "\"";
   if (components > 1) a.element += " NumberOfComponents=\"" + std::to_string(components) + "\"";
@@ -65,15 +82,21 @@ AppendedArray numeric_array(const char* type, const char* name, int components, 
   return a;
 }
 
-AppendedArray string_array(const char* name, const std::vector<const std::string*>& values) {
+// value(i) for i in [0, n), each string followed by a NUL.
+template <class Value>
+AppendedArray string_array(const char* name, std::size_t n, Value&& value) {
   AppendedArray a;
   a.element = std::string("<Array type=\"String\" Name=\"") + name + "\" format=\"appended\"";
-  std::size_t size = 0;
-  for (const std::string* v : values) size += v->size() + 1;
-  a.raw.reserve(size);
-  for (const std::string* v : values) {
-    a.raw.insert(a.raw.end(), v->begin(), v->end());
-    a.raw.push_back('\0');
+  std::vector<std::size_t> start(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) start[i + 1] = start[i] + value(i).size() + 1;
+  a.raw = Bytes(start[n]);
+  const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (count >= kParallelMinItems)
+  for (std::int64_t i = 0; i < count; ++i) {
+    const std::string& v = value(static_cast<std::size_t>(i));
+    char* out = a.raw.data.get() + start[i];
+    std::memcpy(out, v.data(), v.size());
+    out[v.size()] = '\0';
   }
   return a;
 }
@@ -81,13 +104,10 @@ AppendedArray string_array(const char* name, const std::vector<const std::string
 // Connectivity and offsets (where each triangle ends) in the narrowest type VTK reads.
 template <class Id>
 void add_polys(const Mesh& mesh, std::vector<AppendedArray>& polys, const char* type) {
-  std::vector<Id> connectivity(3 * mesh.face_count()), offsets(mesh.face_count());
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    for (int k = 0; k < 3; ++k) connectivity[3 * f + k] = static_cast<Id>(mesh.faces[f][k]);
-    offsets[f] = static_cast<Id>(3 * (f + 1));
-  }
-  polys.push_back(numeric_array(type, "connectivity", 1, bytes_of(connectivity)));
-  polys.push_back(numeric_array(type, "offsets", 1, bytes_of(offsets)));
+  const auto corner = [&](std::size_t i) { return static_cast<Id>(mesh.faces[i / 3][i % 3]); };
+  const auto end = [](std::size_t f) { return static_cast<Id>(3 * (f + 1)); };
+  polys.push_back(numeric_array(type, "connectivity", 1, bytes_of<Id>(3 * mesh.face_count(), corner)));
+  polys.push_back(numeric_array(type, "offsets", 1, bytes_of<Id>(mesh.face_count(), end)));
 }
 
 // A zlib stream per block, as VTK's vtkZLibDataCompressor reads it, made by libdeflate:
@@ -133,14 +153,14 @@ void compress_all(const path& file, std::vector<AppendedArray*>& arrays) {
 #pragma omp for schedule(dynamic, 4)
     for (std::int64_t t = 0; t < count; ++t) {
       AppendedArray& a = *tasks[t].first;
-      const std::size_t b = tasks[t].second, begin = b * kBlockSize, size = std::min(kBlockSize, a.raw.size() - begin);
-      if (!compressor.compress(a.raw.data() + begin, size, a.level, a.blocks[b])) ++failures;
+      const std::size_t b = tasks[t].second, begin = b * kBlockSize, size = std::min(kBlockSize, a.raw.size - begin);
+      if (!compressor.compress(a.raw.data.get() + begin, size, a.level, a.blocks[b])) ++failures;
     }
   }
   if (failures > 0) fail(file, "cannot write: the compressor failed (out of memory?)");
   for (AppendedArray* a : arrays) {
-    a->raw_size = a->raw.size();
-    a->raw = {};
+    a->raw_size = a->raw.size;
+    a->raw = Bytes();
   }
 }
 
@@ -157,41 +177,37 @@ void write_vtp(AtomicFileSet& files, const path& file, const Mesh& mesh, const M
   std::vector<AppendedArray> point_data, cell_data, points, verts, lines, strips, polys;
   {
     const std::vector<Vec3> normal = vertex_normals(mesh);
-    std::vector<float> values(3 * normal.size());
-    for (std::size_t v = 0; v < normal.size(); ++v)
-      for (int k = 0; k < 3; ++k) values[3 * v + k] = static_cast<float>(normal[v][k]);
-    point_data.push_back(numeric_array("Float32", "Normals", 3, bytes_of(values)));
+    const auto component = [&](std::size_t i) { return static_cast<float>(normal[i / 3][static_cast<int>(i % 3)]); };
+    point_data.push_back(numeric_array("Float32", "Normals", 3, bytes_of<float>(3 * normal.size(), component)));
   }
   if (mesh.has_tags()) {
-    cell_data.push_back(numeric_array("Int32", "tag", 1, bytes_of(mesh.face_tags)));
+    const std::size_t faces = mesh.face_count();
+    cell_data.push_back(
+        numeric_array("Int32", "tag", 1, bytes_of<std::int32_t>(faces, [&](std::size_t f) { return mesh.face_tags[f]; })));
     if (!options.atoms.empty()) {
       // check_writable guarantees every tag is kNoTag or an atom index.
-      const std::string none;
-      std::vector<std::int32_t> serial(mesh.face_count()), residue_number(mesh.face_count());
-      std::vector<const std::string*> residue_name(mesh.face_count()), chain(mesh.face_count());
-      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      const Atom none{};  // for kNoTag: serial and residue number 0, empty names
+      const auto atom_of = [&](std::size_t f) -> const Atom& {
         const std::int32_t tag = mesh.face_tags[f];
-        const Atom* atom = tag >= 0 ? &options.atoms[static_cast<std::size_t>(tag)] : nullptr;
-        serial[f] = atom ? atom->serial : 0;
-        residue_number[f] = atom ? atom->residue_number : 0;
-        residue_name[f] = atom ? &atom->residue_name : &none;
-        chain[f] = atom ? &atom->chain : &none;
-      }
-      cell_data.push_back(numeric_array("Int32", "atom_serial", 1, bytes_of(serial)));
-      cell_data.push_back(numeric_array("Int32", "residue_number", 1, bytes_of(residue_number)));
-      cell_data.push_back(string_array("residue_name", residue_name));
-      cell_data.push_back(string_array("chain", chain));
+        return tag >= 0 ? options.atoms[static_cast<std::size_t>(tag)] : none;
+      };
+      cell_data.push_back(numeric_array("Int32", "atom_serial", 1,
+                                        bytes_of<std::int32_t>(faces, [&](std::size_t f) { return atom_of(f).serial; })));
+      cell_data.push_back(numeric_array(
+          "Int32", "residue_number", 1,
+          bytes_of<std::int32_t>(faces, [&](std::size_t f) { return atom_of(f).residue_number; })));
+      cell_data.push_back(
+          string_array("residue_name", faces, [&](std::size_t f) -> const std::string& { return atom_of(f).residue_name; }));
+      cell_data.push_back(string_array("chain", faces, [&](std::size_t f) -> const std::string& { return atom_of(f).chain; }));
     }
   }
   {
-    std::vector<double> values(3 * mesh.vertex_count());
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-      for (int k = 0; k < 3; ++k) values[3 * v + k] = mesh.vertices[v][k];
-    points.push_back(numeric_array("Float64", "Points", 3, bytes_of(values)));
+    const auto coordinate = [&](std::size_t i) { return mesh.vertices[i / 3][static_cast<int>(i % 3)]; };
+    points.push_back(numeric_array("Float64", "Points", 3, bytes_of<double>(3 * mesh.vertex_count(), coordinate)));
   }
   for (auto* section : {&verts, &lines, &strips}) {
-    section->push_back(numeric_array("Int64", "connectivity", 1, {}));
-    section->push_back(numeric_array("Int64", "offsets", 1, {}));
+    section->push_back(numeric_array("Int64", "connectivity", 1, Bytes()));
+    section->push_back(numeric_array("Int64", "offsets", 1, Bytes()));
   }
   // Point ids are signed in VTK: 32 bits while every id and offset fits.
   if (mesh.vertex_count() < (std::size_t{1} << 31) && 3 * mesh.face_count() < (std::size_t{1} << 31))
