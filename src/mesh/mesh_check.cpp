@@ -205,9 +205,6 @@ std::size_t small_fan_count(const Mesh& mesh, Index v, std::span<const std::uint
   return fans;
 }
 
-// Marks used vertices and counts, per vertex, the fans its faces form: faces around v
-// are joined when they share an edge (v, w), i.e. the components of v's link graph whose
-// nodes are the other corners w and whose edges are the faces.
 // The faces around each vertex, faces with a repeated corner left out.
 VertexFaces faces_around_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& topological) {
   const std::size_t nv = mesh.vertices.size();
@@ -227,6 +224,9 @@ VertexFaces faces_around_vertices(const Mesh& mesh, const std::vector<std::uint8
   return around;
 }
 
+// Marks used vertices and counts, per vertex, the fans its faces form: faces around v
+// are joined when they share an edge (v, w), i.e. the components of v's link graph whose
+// nodes are the other corners w and whose edges are the faces.
 void check_vertices(const Mesh& mesh, const VertexFaces& around, std::size_t max_examples, MeshCheck& result) {
   const std::size_t nv = mesh.vertices.size();
   std::vector<std::uint8_t> used(nv, 0);
