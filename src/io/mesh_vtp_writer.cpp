@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -154,7 +155,11 @@ void compress_all(const path& file, std::vector<AppendedArray*>& arrays) {
     for (std::int64_t t = 0; t < count; ++t) {
       AppendedArray& a = *tasks[t].first;
       const std::size_t b = tasks[t].second, begin = b * kBlockSize, size = std::min(kBlockSize, a.raw.size - begin);
-      if (!compressor.compress(a.raw.data.get() + begin, size, a.level, a.blocks[b])) ++failures;
+      try {  // nothing may leave the parallel region
+        if (!compressor.compress(a.raw.data.get() + begin, size, a.level, a.blocks[b])) ++failures;
+      } catch (const std::bad_alloc&) {
+        ++failures;
+      }
     }
   }
   if (failures > 0) fail(file, "cannot write: the compressor failed (out of memory?)");
