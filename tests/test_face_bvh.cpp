@@ -9,7 +9,6 @@
 
 using molsurf::BoundingBox;
 using molsurf::Vec3;
-using molsurf::geometry::boxes_overlap;
 using molsurf::geometry::BoxBvh;
 
 namespace {
@@ -30,7 +29,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const std
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
     for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
-      if (boxes_overlap(boxes[i], boxes[j])) pairs.emplace_back(i, j);
+      if (boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
   return pairs;
 }
 
@@ -38,9 +37,9 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const std
 
 TEST(BoxBvh, TiesOverlap) {
   BoundingBox a{{0, 0, 0}, {1, 1, 1}}, corner_touch{{1, 1, 1}, {2, 2, 2}}, apart{{1.5, 0, 0}, {2, 1, 1}};
-  EXPECT_TRUE(boxes_overlap(a, corner_touch));
-  EXPECT_FALSE(boxes_overlap(a, apart));
-  EXPECT_FALSE(boxes_overlap(a, BoundingBox{}));  // empty overlaps nothing
+  EXPECT_TRUE(a.overlaps(corner_touch));
+  EXPECT_FALSE(a.overlaps(apart));
+  EXPECT_FALSE(a.overlaps(BoundingBox{}));  // empty overlaps nothing
 }
 
 TEST(BoxBvh, PairsEqualBruteForce) {
@@ -76,7 +75,7 @@ TEST(BoxBvh, QueryEqualsBruteForce) {
     std::vector<std::uint32_t> found, expected;
     bvh.for_each_overlap(q, [&](std::uint32_t id) { found.push_back(id); });
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
-      if (boxes_overlap(q, boxes[i])) expected.push_back(i);
+      if (q.overlaps(boxes[i])) expected.push_back(i);
     std::sort(found.begin(), found.end());
     EXPECT_EQ(found, expected);
   }
@@ -130,6 +129,6 @@ TEST(BoxBvh, SinglePrecisionBoundsMissNoPairOfDoubleBoxes) {
     std::vector<std::uint32_t> hits;
     bvh.for_each_overlap(boxes[i], [&](std::uint32_t j) { hits.push_back(j); });
     for (std::uint32_t j = 0; j < boxes.size(); ++j)
-      if (boxes_overlap(boxes[i], boxes[j])) EXPECT_NE(std::find(hits.begin(), hits.end(), j), hits.end()) << i << ", " << j;
+      if (boxes[i].overlaps(boxes[j])) EXPECT_NE(std::find(hits.begin(), hits.end(), j), hits.end()) << i << ", " << j;
   }
 }

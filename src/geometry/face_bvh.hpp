@@ -24,9 +24,6 @@
 
 namespace molsurf::geometry {
 
-// Closed-box overlap; ties overlap.
-inline bool boxes_overlap(const BoundingBox& a, const BoundingBox& b) { return a.overlaps(b); }
-
 // The closed box of one face, from its exact corner coordinates.
 BoundingBox face_box(const Mesh& mesh, std::size_t face);
 

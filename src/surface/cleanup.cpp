@@ -53,33 +53,28 @@ class Sweep {
     // The first pass measures every face; a later one only the faces the one before
     // listed or changed: no other face's corners moved, so its angle holds.
     std::vector<std::pair<double, std::uint32_t>> distorted;
+    // Faces face_of(0 .. n-1) whose smallest angle is below the goal, in that order: measured
+    // in parallel, atan2 only where the tangent leaves it in doubt.
+    auto list_distorted = [&](std::size_t n, auto&& face_of) {
+      std::vector<double> angle(n);
+      const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (count >= kParallelMinItems / 4)
+      for (std::int64_t k = 0; k < count; ++k) {
+        const std::uint32_t f = face_of(static_cast<std::size_t>(k));
+        angle[k] = s_.editable.alive(f) && !serial.surely_at_least(f, tan_goal) ? serial.min_angle(f) : 180;
+      }
+      for (std::size_t k = 0; k < n; ++k)
+        if (angle[k] < s_.options.min_angle_deg) distorted.emplace_back(angle[k], face_of(k));
+    };
     for (int pass = 0; pass < s_.options.passes; ++pass) {
       if (pass == 0) {
-        // In parallel, atan2 only where the tangent leaves it in doubt; in face order.
-        std::vector<double> angle(m.faces.size());
-        const auto nf = static_cast<std::int64_t>(m.faces.size());
-#pragma omp parallel for schedule(static)
-        for (std::int64_t f = 0; f < nf; ++f) {
-          const auto face = static_cast<std::uint32_t>(f);
-          angle[f] = s_.editable.alive(f) && !serial.surely_at_least(face, tan_goal) ? serial.min_angle(face) : 180;
-        }
-        for (std::uint32_t f = 0; f < m.faces.size(); ++f)
-          if (s_.editable.alive(f) && angle[f] < s_.options.min_angle_deg) distorted.emplace_back(angle[f], f);
+        list_distorted(m.faces.size(), [](std::size_t k) { return static_cast<std::uint32_t>(k); });
       } else {
         for (const auto& listed : distorted) touched_.push_back(listed.second);
         std::sort(touched_.begin(), touched_.end());
         touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
         distorted.clear();
-        // As in the first pass: in parallel, atan2 only where the tangent leaves it in doubt.
-        std::vector<double> angle(touched_.size());
-        const auto nt = static_cast<std::int64_t>(touched_.size());
-#pragma omp parallel for schedule(static) if (nt >= kParallelMinItems / 4)
-        for (std::int64_t k = 0; k < nt; ++k) {
-          const std::uint32_t f = touched_[k];
-          angle[k] = s_.editable.alive(f) && !serial.surely_at_least(f, tan_goal) ? serial.min_angle(f) : 180;
-        }
-        for (std::size_t k = 0; k < touched_.size(); ++k)
-          if (angle[k] < s_.options.min_angle_deg) distorted.emplace_back(angle[k], touched_[k]);
+        list_distorted(touched_.size(), [&](std::size_t k) { return touched_[k]; });
       }
       touched_.clear();
       if (distorted.empty()) break;
