@@ -17,7 +17,6 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/shapes.hpp"
 #include "molsurf/surface.hpp"
-#include "mesh/face_grid.hpp"
 
 namespace molsurf {
 namespace {
@@ -387,51 +386,6 @@ TEST(Cleanup, GivesTheSameSurfaceOnOneAndTwoThreads) {
   EXPECT_EQ(stats[0].moves, stats[1].moves);
   EXPECT_EQ(stats[0].refused, stats[1].refused);
 }
-
-// The index finds every face whose box meets the query's, before and after faces change,
-// including faces that leave the box the grid was built for (clamped onto its border).
-TEST(FaceGrid, FindsEveryFaceWhoseBoxMeetsTheQuery) {
-  Mesh m = make_icosphere({}, 2, {.frequency = 6, .tag = 0});
-  FaceGrid grid(m, 0.3);
-  auto overlaps = [](const BoundingBox& a, const BoundingBox& b) {
-    return !(a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y ||
-             a.max.z < b.min.z || b.max.z < a.min.z);
-  };
-  auto check = [&](const std::vector<std::uint8_t>& indexed) {
-    for (std::size_t q = 0; q < m.faces.size(); q += 7) {
-      BoundingBox box = bounding_box(m, q);
-      std::vector<std::uint8_t> found(m.faces.size(), 0);
-      grid.near(box, [&](std::uint32_t g) {
-        found[g] = 1;
-        return true;
-      });
-      for (std::size_t g = 0; g < m.faces.size(); ++g)
-        if (indexed[g] && overlaps(box, bounding_box(m, g))) EXPECT_TRUE(found[g]) << q << " " << g;
-    }
-  };
-  std::vector<std::uint8_t> indexed(m.faces.size(), 1);
-  check(indexed);
-  // Face 0 goes; face 1 moves far outside the original box; face 2 changes and comes back.
-  grid.erase(0);
-  indexed[0] = 0;
-  grid.erase(1);
-  m.vertices.push_back({5, 5, 5});
-  m.faces[1][0] = static_cast<Index>(m.vertices.size() - 1);
-  grid.insert(1);
-  grid.erase(2);
-  grid.insert(2);
-  check(indexed);
-  std::size_t visits = 0;
-  EXPECT_FALSE(grid.near(bounding_box(m), [&](std::uint32_t) { return ++visits < 3; }));  // stops when told
-  EXPECT_EQ(visits, 3u);
-  bool far_found = false;
-  grid.near(bounding_box(m, 1), [&](std::uint32_t g) {
-    far_found = far_found || g == 1;
-    return true;
-  });
-  EXPECT_TRUE(far_found);
-}
-
 
 std::vector<double> edge_lengths(const Mesh& m) {
   std::vector<double> out;

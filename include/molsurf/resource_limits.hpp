@@ -24,10 +24,11 @@ inline constexpr std::uint64_t kDefaultMaxSphereFaces = 300'000'000;
 inline constexpr std::uint64_t kMaxFacesPerSphere = 20 * 200 * 200;
 
 // The whole job's peak memory (union, cleanup, check, write) per face of the union before
-// cleanup, as resident memory over those faces: 2btv at probe 0, density 4 (22.9 M faces,
-// 5.2 GB) gives 226 bytes, the capsid at the defaults (11.5 M faces, 2.8 GB) 246
-// (docs/performance.md); rounded up.
-inline constexpr std::uint64_t kBytesPerSurfaceFace = 300;
+// cleanup, as resident memory over those faces in `molsurf`, which returns freed memory at
+// once on jobs this large: 2btv at probe 0, density 4 (22.9 M faces, 3.19 GB) gives 139
+// bytes, the capsid at the defaults (11.5 M faces, 1.88 GB) 164 (docs/performance.md,
+// "Memory"); rounded up.
+inline constexpr std::uint64_t kBytesPerSurfaceFace = 180;
 
 // The memory this process may use: the machine's physical memory, or its control group's
 // limit (cgroup v2 memory.max) when that is lower.

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cli/allocation.hpp"
 #include "cli/commands.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
@@ -79,7 +80,7 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->group(sphere);
   app.add_option("--max-memory", max_memory_gb,
                  "Refuse to start the union when the surface would need more memory than this many GB\n"
-                 "(estimated from a sample of atoms, about 300 bytes per face); default: this machine's memory")
+                 "(estimated from a sample of atoms, about 180 bytes per face); default: this machine's memory")
       ->check(finite_number(0, 1e9, true))
       ->group(sphere);
   auto* volume_group = "Volume mesh around the molecule (paper section 3.4)";
@@ -372,6 +373,10 @@ int SurfaceCommand::run() const {
   report.seconds.read = seconds_since(read_start);
   // compute_surface refuses the same; checked here too so that nothing is printed first.
   check_sphere_resources(structure, s.atoms, spheres, max_faces);
+  // A job that may fill a large share of the memory trades a little time for a smaller
+  // footprint (allocation.hpp).
+  const std::uint64_t memory = max_memory_gb > 0 ? static_cast<std::uint64_t>(max_memory_gb * 1e9) : available_memory_bytes();
+  if (estimate_resources(s.atoms, spheres).bytes > memory / 32) save_memory();
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
   if (!quiet) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 

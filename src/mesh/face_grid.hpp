@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -25,42 +26,50 @@ namespace molsurf {
 class FaceGrid {
  public:
   // Cells of side `cell`, enlarged until the grid has at most about 4 cells per face (a
-  // surface fills few of a volume's cells; the capsid would otherwise need 64 M).
-  FaceGrid(const Mesh& m, double cell)
+  // surface fills few of a volume's cells; the capsid would otherwise need 64 M) and its
+  // entries fit 32-bit offsets. The faces' boxes are stored in single precision, rounded
+  // outward (a box only rejects), and the cells' offsets in 32 bits: on the largest
+  // surfaces this index is the cleanup's largest array (docs/performance.md, "Memory").
+  FaceGrid(const Mesh& m, double cell, std::uint64_t max_entries = kMaxEntries)
       : m_(m), box_(std::make_unique_for_overwrite<StoredBox[]>(m.faces.size())), in_flat_(m.faces.size(), 1) {
     const BoundingBox all = bounding_box(m);
     origin_ = all.empty() ? Vec3{} : all.min;
     const Vec3 extent = all.empty() ? Vec3{} : all.max - all.min;
     const double max_cells = 4.0 * static_cast<double>(std::max<std::size_t>(m.faces.size(), 1)) + 64;
-    for (;;) {
-      for (int a = 0; a < 3; ++a) size_[a] = static_cast<std::int64_t>(std::floor(extent[a] / cell)) + 1;
-      if (static_cast<double>(size_[0]) * static_cast<double>(size_[1]) * static_cast<double>(size_[2]) <= max_cells)
-        break;
-      cell *= 1.25;
-    }
-    cell_ = cell;
-    inverse_cell_ = 1.0 / cell;
-    for (int a = 0; a < 3; ++a) shards_size_[a] = (size_[a] + kShard - 1) / kShard;
-    moved_.resize(static_cast<std::size_t>(shards_size_[0] * shards_size_[1] * shards_size_[2]));
-    const std::size_t cells = static_cast<std::size_t>(size_[0] * size_[1] * size_[2]);
-    start_.assign(cells + 1, 0);
-    // Counting and filling in parallel: the order of a cell's faces depends on the
-    // threads, but a query's answer is a set (every caller's result is the same for any
-    // order of visits), so no editor's result does.
     const auto nf = static_cast<std::int64_t>(m.faces.size());
 #pragma omp parallel for schedule(static)
-    for (std::int64_t f = 0; f < nf; ++f) {
-      box_[f] = StoredBox::of(bounding_box(m, static_cast<std::size_t>(f)));
-      for_cells(box(f), [&](std::uint64_t c) { std::atomic_ref(start_[c + 1]).fetch_add(1, std::memory_order_relaxed); });
-    }
-    for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
-    flat_.resize(start_[cells]);
-    std::vector<std::uint64_t> fill(start_.begin(), start_.end() - 1);
+    for (std::int64_t f = 0; f < nf; ++f) box_[f] = StoredBox::of(bounding_box(m, static_cast<std::size_t>(f)));
+    // Counting in parallel, then filling each cell from its end down: the order of a
+    // cell's faces depends on the threads, but a query's answer is a set (every caller's
+    // result is the same for any order of visits), so no editor's result does.
+    for (;; cell *= 1.25) {
+      for (int a = 0; a < 3; ++a) size_[a] = static_cast<std::int64_t>(std::floor(extent[a] / cell)) + 1;
+      if (static_cast<double>(size_[0]) * static_cast<double>(size_[1]) * static_cast<double>(size_[2]) > max_cells)
+        continue;
+      inverse_cell_ = 1.0 / cell;
+      const std::size_t cells = static_cast<std::size_t>(size_[0] * size_[1] * size_[2]);
+      start_.assign(cells + 1, 0);
+      std::uint64_t entries = 0;
+#pragma omp parallel for schedule(static) reduction(+ : entries)
+      for (std::int64_t f = 0; f < nf; ++f)
+        for_cells(box(static_cast<std::uint32_t>(f)), [&](std::uint64_t c) {
+          std::atomic_ref(start_[c]).fetch_add(1, std::memory_order_relaxed);
+          ++entries;
+        });
+      if (entries > max_entries) continue;  // coarser cells hold each face fewer times
+      for (std::size_t c = 1; c < cells; ++c) start_[c] += start_[c - 1];
+      start_[cells] = static_cast<std::uint32_t>(entries);
+      flat_.resize(entries);
 #pragma omp parallel for schedule(static)
-    for (std::int64_t f = 0; f < nf; ++f)
-      for_cells(box(f), [&](std::uint64_t c) {
-        flat_[std::atomic_ref(fill[c]).fetch_add(1, std::memory_order_relaxed)] = static_cast<std::uint32_t>(f);
-      });
+      for (std::int64_t f = 0; f < nf; ++f)
+        for_cells(box(static_cast<std::uint32_t>(f)), [&](std::uint64_t c) {
+          flat_[std::atomic_ref(start_[c]).fetch_sub(1, std::memory_order_relaxed) - 1] = static_cast<std::uint32_t>(f);
+        });
+      break;
+    }
+    cell_ = cell;
+    for (int a = 0; a < 3; ++a) shards_size_[a] = (size_[a] + kShard - 1) / kShard;
+    moved_.resize(static_cast<std::size_t>(shards_size_[0] * shards_size_[1] * shards_size_[2]));
   }
 
   // Before face f changes (or goes): its present cells forget it.
@@ -81,6 +90,7 @@ class FaceGrid {
     });
   }
 
+  // Face f's box as indexed: it holds the face's box as it was then.
   BoundingBox box(std::uint32_t f) const {
     BoundingBox b;
     b.min = {box_[f].min[0], box_[f].min[1], box_[f].min[2]};
@@ -112,6 +122,7 @@ class FaceGrid {
 
  private:
   static constexpr std::int64_t kShard = 2;
+  static constexpr std::uint64_t kMaxEntries = std::numeric_limits<std::uint32_t>::max();
   struct Moved {
     std::uint64_t cell;
     std::uint32_t face;
@@ -141,15 +152,25 @@ class FaceGrid {
   Vec3 origin_;
   double cell_ = 1, inverse_cell_ = 1;
   std::int64_t size_[3] = {1, 1, 1}, shards_size_[3] = {1, 1, 1};
-  // A face's box as indexed. Trivial, so the array is left unwritten until the parallel
-  // loop fills it (a serial first write of a large array costs more than its filling: each
-  // new page is a fault).
+  // A face's box as indexed, in single precision rounded outward. Trivial, so the array
+  // is left unwritten until the parallel loop fills it (a serial first write of a large
+  // array costs more than its filling: each new page is a fault).
   struct StoredBox {
-    std::array<double, 3> min, max;
-    static StoredBox of(const BoundingBox& b) { return {{b.min.x, b.min.y, b.min.z}, {b.max.x, b.max.y, b.max.z}}; }
+    std::array<float, 3> min, max;
+    static float below(double x) {
+      const auto f = static_cast<float>(x);
+      return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    }
+    static float above(double x) {
+      const auto f = static_cast<float>(x);
+      return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    }
+    static StoredBox of(const BoundingBox& b) {
+      return {{below(b.min.x), below(b.min.y), below(b.min.z)}, {above(b.max.x), above(b.max.y), above(b.max.z)}};
+    }
   };
   std::unique_ptr<StoredBox[]> box_;      // per face
-  std::vector<std::uint64_t> start_;      // per cell of the dense grid: its range in flat_
+  std::vector<std::uint32_t> start_;      // per cell of the dense grid: its range in flat_
   std::vector<std::uint32_t> flat_;       // the faces as they were at construction
   std::vector<std::uint8_t> in_flat_;     // per face: its flat entries still hold
   // Per block of cells (allocated when first written): faces changed since, with their cell.
