@@ -2,6 +2,8 @@
 // on an edge and the vertices that block an edge's collapse (mesh/topology.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
 #include <vector>
 
 #include "mesh/topology.hpp"
@@ -68,6 +70,48 @@ TEST(VertexFaceIndex, AFaceWithARepeatedCornerIsListedTwiceAndHasTwoEdgesThere) 
   const VertexFaceIndex index = index_of(m);
   EXPECT_EQ(index.of(0).size(), 2u);
   EXPECT_EQ(faces_on_edge(m, index.of(0), 0, 1).size(), 2u);  // edges 0-1 and 1-0, once each
+}
+
+// Lists short enough to sit in place and long ones in an array of their own (a vertex of
+// 40 faces), growing, shrinking and moving as the index grows: always the faces added and
+// not removed, in the order added, as plain lists would hold them.
+TEST(VertexFaceIndex, AgreesWithPlainListsThroughRandomEdits) {
+  constexpr std::uint32_t kVertices = 60;
+  std::mt19937 random(7);
+  VertexFaceIndex index(kVertices);
+  std::vector<std::vector<std::uint32_t>> plain(kVertices);
+  std::vector<Triangle> faces;
+  std::vector<std::uint8_t> listed;
+  for (int step = 0; step < 20000; ++step) {
+    if (faces.empty() || random() % 3 != 0) {
+      // Vertex 0 is a corner of every fourth face, so its list grows long.
+      Triangle t{static_cast<Index>(random() % 4 == 0 ? 0 : random() % kVertices),
+                 static_cast<Index>(random() % kVertices), static_cast<Index>(random() % kVertices)};
+      if (random() % 2 == 0 || faces.empty()) {
+        faces.push_back(t);
+        listed.push_back(0);
+      }
+      const auto f = static_cast<std::uint32_t>(random() % faces.size());
+      if (listed[f]) continue;
+      index.add(f, faces[f]);
+      for (Index v : faces[f]) plain[v].push_back(f);
+      listed[f] = 1;
+    } else {
+      const auto f = static_cast<std::uint32_t>(random() % faces.size());
+      if (!listed[f]) continue;
+      index.remove(f, faces[f]);
+      for (Index v : faces[f]) std::erase(plain[v], f);
+      listed[f] = 0;
+    }
+    if (step % 97 == 0)
+      for (Index v = 0; v < kVertices; ++v) ASSERT_EQ(as_vector(index.of(v)), plain[v]) << step << " " << v;
+  }
+  std::size_t longest = 0;
+  for (Index v = 0; v < kVertices; ++v) {
+    EXPECT_EQ(as_vector(index.of(v)), plain[v]) << v;
+    longest = std::max(longest, plain[v].size());
+  }
+  EXPECT_GT(longest, 40u);
 }
 
 TEST(MeshTopology, FacesOnAnEdgeOfAClosedMeshAreTwo) {
