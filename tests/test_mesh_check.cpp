@@ -513,3 +513,37 @@ TEST(MeshCheckNesting, IslandInACavityFacesOutward) {
   c = molsurf::check_mesh(m);
   EXPECT_EQ(c.inward_components, 1u);
 }
+
+// Twenty thousand components, each nested correctly or not: small solid cubes beside a
+// block, small cavities in the block's wall (between it and a large cavity), and in that
+// cavity an island holding small cavities of its own. Every component is placed by the
+// boxes that hold its box (found through a tree of the components' boxes).
+TEST(MeshCheckNesting, ManyComponentsEachPlacedByTheBoxesHoldingIt) {
+  Mesh m = cube({0, 0, 0}, 100);
+  m = joined(m, flipped(cube({20, 20, 20}, 60)));  // the large cavity
+  m = joined(m, cube({40, 40, 40}, 20));           // the island in it
+  std::size_t small = 0;
+  auto add_row = [&](const Vec3& from, double step, int count, bool cavity) {
+    Mesh row;
+    for (int i = 0; i < count; ++i) {
+      const Vec3 at = from + Vec3{step * (i % 40), step * ((i / 40) % 40), step * (i / 1600)};
+      row.append(cavity ? flipped(cube(at, step / 2)) : cube(at, step / 2));
+    }
+    m.append(row);
+    small += static_cast<std::size_t>(count);
+  };
+  add_row({110, 0, 0}, 1, 8000, false);      // solid cubes beside the block
+  add_row({2, 2, 2}, 0.4, 6000, true);       // cavities in the block's wall (x, y, z < 18)
+  add_row({41, 41, 41}, 0.4, 6000, true);    // cavities in the island
+  molsurf::MeshCheckOptions options;
+  options.self_intersections = false;
+  MeshCheck c = check_mesh(m, options);
+  EXPECT_EQ(c.components, 3 + small);
+  EXPECT_EQ(c.inward_components, 0u);
+  EXPECT_TRUE(c.valid()) << ::testing::PrintToString(c.defects());
+  // One of each kind turned the wrong way round.
+  for (const std::size_t first : {std::size_t{36}, std::size_t{36 + 12 * 8000}, std::size_t{36 + 12 * 14000}})
+    for (std::size_t f = first; f < first + 12; ++f) std::swap(m.faces[f][1], m.faces[f][2]);
+  c = check_mesh(m, options);
+  EXPECT_EQ(c.inward_components, 3u);
+}

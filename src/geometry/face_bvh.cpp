@@ -7,6 +7,7 @@
 
 #include "common/parallel_exceptions.hpp"
 #include "common/parallel_threshold.hpp"
+#include "geometry/float_bounds.hpp"
 
 namespace molsurf::geometry {
 
@@ -34,21 +35,6 @@ BoundingBox face_box(const Mesh& mesh, std::size_t face) {
 void BoxBvh::Bounds::resize(std::size_t n) {
   for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->resize(n);
 }
-
-namespace {
-
-// The largest float not above x, and the smallest not below it (outside float's range:
-// the infinities, so a huge box still covers everything it must).
-float float_below(double x) {
-  if (!(x <= std::numeric_limits<float>::max())) return x > 0 ? std::numeric_limits<float>::max() : x;
-  if (x < -static_cast<double>(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::infinity();
-  const auto f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-
-float float_above(double x) { return -float_below(-x); }
-
-}  // namespace
 
 void BoxBvh::Bounds::set(std::size_t i, const BoundingBox& b) {
   min_x[i] = float_below(b.min.x);

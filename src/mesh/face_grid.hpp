@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/float_bounds.hpp"
 #include "molsurf/mesh.hpp"
 
 namespace molsurf {
@@ -157,16 +158,10 @@ class FaceGrid {
   // array costs more than its filling: each new page is a fault).
   struct StoredBox {
     std::array<float, 3> min, max;
-    static float below(double x) {
-      const auto f = static_cast<float>(x);
-      return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-    }
-    static float above(double x) {
-      const auto f = static_cast<float>(x);
-      return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-    }
     static StoredBox of(const BoundingBox& b) {
-      return {{below(b.min.x), below(b.min.y), below(b.min.z)}, {above(b.max.x), above(b.max.y), above(b.max.z)}};
+      using geometry::float_above, geometry::float_below;
+      return {{float_below(b.min.x), float_below(b.min.y), float_below(b.min.z)},
+              {float_above(b.max.x), float_above(b.max.y), float_above(b.max.z)}};
     }
   };
   std::unique_ptr<StoredBox[]> box_;      // per face

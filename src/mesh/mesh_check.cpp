@@ -404,14 +404,21 @@ void check_components(const Mesh& mesh, const std::function<const geometry::BoxB
     b.max = {std::max(b.max.x, fb.max.x), std::max(b.max.y, fb.max.y), std::max(b.max.z, fb.max.z)};
   }
   const std::vector<int> volume = component_volumes(mesh, components).sign;
+  // The components whose boxes hold c's, found through a tree of the components' boxes
+  // (a mesh of many small parts, a million say, would take hours pair by pair).
+  const geometry::BoxBvh component_tree{std::span<const BoundingBox>(box)};
+  auto for_each_holding = [&](std::uint32_t c, auto&& visit) {
+    component_tree.for_each_overlap(box[c], [&](std::uint32_t d) {
+      if (d != c && box_contains(box[d], box[c])) visit(d);
+    });
+  };
   if (!result.closed() || result.nonmanifold_edges > 0) {
     // Without closed components "inside" means nothing: fall back to the volume sign of
     // components that no other component's box contains.
-    for (std::size_t c = 0; c < components.count; ++c) {
+    for (std::uint32_t c = 0; c < components.count; ++c) {
       if (volume[c] > 0) continue;
       bool nested = false;
-      for (std::size_t other = 0; other < components.count && !nested; ++other)
-        nested = other != c && volume[other] > 0 && box_contains(box[other], box[c]);
+      for_each_holding(c, [&](std::uint32_t d) { nested = nested || volume[d] > 0; });
       if (!nested) ++result.inward_components;
     }
     return;
@@ -424,10 +431,9 @@ void check_components(const Mesh& mesh, const std::function<const geometry::BoxB
   const double max_x = bounding_box(mesh).max.x;
   std::vector<std::uint8_t> pending(components.count, 0), parity(components.count), contact(components.count);
   std::vector<std::uint32_t> around;
-  for (std::size_t c = 0; c < components.count; ++c) {
+  for (std::uint32_t c = 0; c < components.count; ++c) {
     around.clear();
-    for (std::uint32_t d = 0; d < components.count; ++d)
-      if (d != c && box_contains(box[d], box[c])) around.push_back(d);
+    for_each_holding(c, [&](std::uint32_t d) { around.push_back(d); });
     std::size_t depth = 0;
     for (const std::uint32_t d : around) pending[d] = 1;
     std::size_t undecided = around.size();
