@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -357,6 +359,25 @@ TEST(Cli, ASurfaceTooLargeForTheMemoryLimitIsRefusedBeforeAnythingIsWritten) {
   }
   r = run_molsurf("-q --max-memory 1 -o c.vtp " + crambin, dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// A job large against the memory limit runs with the allocator's small-footprint settings
+// (src/cli/allocation.cpp); nothing in the surface may depend on them (no array is read
+// before it is written, whatever memory the allocator hands out).
+TEST(Cli, TheAllocatorsSettingsForLargeJobsChangeNoByte) {
+  TempDir dir;
+  const std::string crambin = "'" + kData + "/pdb/1crn.pdb'";
+  // 1crn's spheres are estimated at about 12 MB: over 1/32 of 0.2 GB, far under 0.2 GB.
+  auto r = run_molsurf("-q --max-memory 0.2 -o small.off " + crambin, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_molsurf("-q -o fast.off " + crambin, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto bytes = [&](const char* name) {
+    std::ifstream in(dir.path() / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_GT(bytes("fast.off").size(), 100000u);
+  EXPECT_TRUE(bytes("small.off") == bytes("fast.off"));
 }
 
 TEST(Cli, VolumeMeshIsWrittenWithTheSurfaceOrRefusedBeforeAnyWork) {

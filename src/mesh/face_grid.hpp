@@ -33,13 +33,24 @@ class FaceGrid {
   // surfaces this index is the cleanup's largest array (docs/performance.md, "Memory").
   FaceGrid(const Mesh& m, double cell, std::uint64_t max_entries = kMaxEntries)
       : m_(m), box_(std::make_unique_for_overwrite<StoredBox[]>(m.faces.size())), in_flat_(m.faces.size(), 1) {
-    const BoundingBox all = bounding_box(m);
+    // The faces' boxes, and with them the mesh's (of every face's corners, exactly).
+    BoundingBox all;
+    const auto nf = static_cast<std::int64_t>(m.faces.size());
+#pragma omp parallel
+    {
+      BoundingBox part;
+#pragma omp for schedule(static) nowait
+      for (std::int64_t f = 0; f < nf; ++f) {
+        const BoundingBox b = bounding_box(m, static_cast<std::size_t>(f));
+        box_[f] = StoredBox::of(b);
+        part.extend(b);
+      }
+#pragma omp critical(molsurf_face_grid_box)
+      all.extend(part);
+    }
     origin_ = all.empty() ? Vec3{} : all.min;
     const Vec3 extent = all.empty() ? Vec3{} : all.max - all.min;
     const double max_cells = 4.0 * static_cast<double>(std::max<std::size_t>(m.faces.size(), 1)) + 64;
-    const auto nf = static_cast<std::int64_t>(m.faces.size());
-#pragma omp parallel for schedule(static)
-    for (std::int64_t f = 0; f < nf; ++f) box_[f] = StoredBox::of(bounding_box(m, static_cast<std::size_t>(f)));
     // Counting in parallel, then filling each cell from its end down: the order of a
     // cell's faces depends on the threads, but a query's answer is a set (every caller's
     // result is the same for any order of visits), so no editor's result does.
@@ -53,7 +64,7 @@ class FaceGrid {
       std::uint64_t entries = 0;
 #pragma omp parallel for schedule(static) reduction(+ : entries)
       for (std::int64_t f = 0; f < nf; ++f)
-        for_cells(box(static_cast<std::uint32_t>(f)), [&](std::uint64_t c) {
+        for_cells(box(static_cast<std::uint32_t>(f)), [&](std::uint64_t c, std::size_t) {
           std::atomic_ref(start_[c]).fetch_add(1, std::memory_order_relaxed);
           ++entries;
         });
@@ -63,7 +74,7 @@ class FaceGrid {
       flat_.resize(entries);
 #pragma omp parallel for schedule(static)
       for (std::int64_t f = 0; f < nf; ++f)
-        for_cells(box(static_cast<std::uint32_t>(f)), [&](std::uint64_t c) {
+        for_cells(box(static_cast<std::uint32_t>(f)), [&](std::uint64_t c, std::size_t) {
           flat_[std::atomic_ref(start_[c]).fetch_sub(1, std::memory_order_relaxed) - 1] = static_cast<std::uint32_t>(f);
         });
       break;
@@ -79,13 +90,13 @@ class FaceGrid {
       in_flat_[f] = 0;  // its flat entries are skipped from now on
       return;
     }
-    for_cells(box(f), [&](std::uint64_t c) { std::erase(*moved_[shard_of(c)], Moved{c, f}); });
+    for_cells(box(f), [&](std::uint64_t c, std::size_t shard) { std::erase(*moved_[shard], Moved{c, f}); });
   }
   // After face f changed (or came back): indexed at its present corners.
   void insert(std::uint32_t f) {
     box_[f] = StoredBox::of(bounding_box(m_, f));
-    for_cells(box(f), [&](std::uint64_t c) {
-      auto& list = moved_[shard_of(c)];
+    for_cells(box(f), [&](std::uint64_t c, std::size_t shard) {
+      auto& list = moved_[shard];
       if (!list) list = std::make_unique<std::vector<Moved>>();
       list->push_back({c, f});
     });
@@ -109,12 +120,12 @@ class FaceGrid {
   template <class Visit>
   bool near(const BoundingBox& box, Visit&& visit) const {
     bool go_on = true;
-    for_cells(box, [&](std::uint64_t c) {
+    for_cells(box, [&](std::uint64_t c, std::size_t shard) {
       if (!go_on) return;
       for (std::uint64_t k = start_[c]; go_on && k < start_[c + 1]; ++k)
         if (in_flat_[flat_[k]]) go_on = visit(flat_[k]);
       if (!go_on) return;
-      if (const auto& list = moved_[shard_of(c)])
+      if (const auto& list = moved_[shard])
         for (const Moved& entry : *list)
           if (entry.cell == c && !(go_on = visit(entry.face))) return;
     });
@@ -129,13 +140,7 @@ class FaceGrid {
     std::uint32_t face;
     bool operator==(const Moved&) const = default;
   };
-  std::size_t shard_of(std::uint64_t c) const {
-    const auto k = static_cast<std::int64_t>(c % static_cast<std::uint64_t>(size_[2]));
-    const auto ij = static_cast<std::int64_t>(c / static_cast<std::uint64_t>(size_[2]));
-    const std::int64_t j = ij % size_[1], i = ij / size_[1];
-    return static_cast<std::size_t>(((i / kShard) * shards_size_[1] + j / kShard) * shards_size_[2] + k / kShard);
-  }
-
+  // Calls f(cell, its block) for every cell of the dense grid that box b touches.
   template <class F>
   void for_cells(const BoundingBox& b, F&& f) const {
     auto cell = [&](double x, int a) {
@@ -146,7 +151,9 @@ class FaceGrid {
                        k0 = cell(b.min.z, 2), k1 = cell(b.max.z, 2);
     for (std::int64_t i = i0; i <= i1; ++i)
       for (std::int64_t j = j0; j <= j1; ++j)
-        for (std::int64_t k = k0; k <= k1; ++k) f(static_cast<std::uint64_t>((i * size_[1] + j) * size_[2] + k));
+        for (std::int64_t k = k0; k <= k1; ++k)
+          f(static_cast<std::uint64_t>((i * size_[1] + j) * size_[2] + k),
+            static_cast<std::size_t>(((i / kShard) * shards_size_[1] + j / kShard) * shards_size_[2] + k / kShard));
   }
 
   const Mesh& m_;

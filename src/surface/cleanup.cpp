@@ -97,13 +97,27 @@ class Sweep {
     const Mesh& m = s_.m;
     // The longest face (on any axis of its box) bounds how far a worker reads beyond the
     // faces it changes; an edit may make no face longer than twice that.
+    // The same pass takes the box of every face's corners (the dead faces' too), which the
+    // coarse grid below spans.
     double longest = 0;
+    BoundingBox all;
     const auto nf = static_cast<std::int64_t>(m.faces.size());
-#pragma omp parallel for schedule(static) reduction(max : longest)
-    for (std::int64_t f = 0; f < nf; ++f) {
-      if (!s_.editable.alive(f)) continue;
-      const BoundingBox b = bounding_box(m, static_cast<std::size_t>(f));
-      longest = std::max({longest, b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
+#pragma omp parallel
+    {
+      double part_longest = 0;
+      BoundingBox part;
+#pragma omp for schedule(static) nowait
+      for (std::int64_t f = 0; f < nf; ++f) {
+        const BoundingBox b = bounding_box(m, static_cast<std::size_t>(f));
+        part.extend(b);
+        if (s_.editable.alive(f))
+          part_longest = std::max({part_longest, b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
+      }
+#pragma omp critical(molsurf_cleanup_extent)
+      {
+        all.extend(part);
+        longest = std::max(longest, part_longest);
+      }
     }
     const double max_extent = 2 * longest;
     // An edit changes faces around the distorted face's corners; its region reaches this far
@@ -114,7 +128,6 @@ class Sweep {
     const double cell = s_.editable.grid()->cell_size();
     const double reach = std::max(4 * max_extent + cell, s_.editable.grid()->shard_side() + 2 * cell);
     const double side = 1.25 * (2 * margin + reach);
-    const BoundingBox all = bounding_box(m);
     std::int64_t n[3];
     for (int a = 0; a < 3; ++a)
       n[a] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::ceil((all.max[a] - all.min[a]) / side)), 1, 1 << 20);
