@@ -59,6 +59,7 @@ class FaceGrid {
       if (static_cast<double>(size_[0]) * static_cast<double>(size_[1]) * static_cast<double>(size_[2]) > max_cells)
         continue;
       inverse_cell_ = 1.0 / cell;
+      for (int a = 0; a < 3; ++a) shards_size_[a] = (size_[a] + kShard - 1) / kShard;  // for_cells names blocks
       const std::size_t cells = static_cast<std::size_t>(size_[0] * size_[1] * size_[2]);
       start_.assign(cells + 1, 0);
       std::uint64_t entries = 0;
@@ -80,7 +81,6 @@ class FaceGrid {
       break;
     }
     cell_ = cell;
-    for (int a = 0; a < 3; ++a) shards_size_[a] = (size_[a] + kShard - 1) / kShard;
     moved_.resize(static_cast<std::size_t>(shards_size_[0] * shards_size_[1] * shards_size_[2]));
   }
 
