@@ -2,12 +2,14 @@
 // What users study on a surface: area and volume per component (outer surface and
 // cavities), per atom and per residue.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
+#include "molsurf/sphere_arrangement.hpp"
 
 namespace molsurf {
 
@@ -20,6 +22,12 @@ struct ComponentMeasure {
 
 // Components by shared vertices; the largest outer surface first, then by area.
 std::vector<ComponentMeasure> measure_components(const Mesh& mesh);
+
+// Each of the mesh's components (in measure_components' order) matched to the shell of the
+// arrangement it follows: the shell that most of its area's atoms line, each face voting
+// with its area for its atom's shell when the atom lines one shell only; -1 when no face
+// votes.
+std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement);
 
 // The mesh without its cavities (components of negative volume).
 Mesh outer_surface_only(const Mesh& mesh);

@@ -11,21 +11,75 @@
 
 namespace molsurf {
 
-std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
+namespace {
+
+// The components with their measures, and their order for reports: the largest outer
+// surface first, then by area (order[k] is the k-th component reported).
+struct MeasuredComponents {
+  Components parts;
+  std::vector<ComponentMeasure> measures;
+  std::vector<std::size_t> order;
+};
+
+MeasuredComponents measured_components(const Mesh& mesh) {
   // Volumes about each component's own vertex, with an exact sign (mesh/component_volume.hpp).
-  const Components parts = connected_components(mesh);
-  const ComponentVolumes volumes = component_volumes(mesh, parts);
-  std::vector<ComponentMeasure> out(parts.count);
+  MeasuredComponents m;
+  m.parts = connected_components(mesh);
+  const ComponentVolumes volumes = component_volumes(mesh, m.parts);
+  m.measures.resize(m.parts.count);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    ComponentMeasure& c = out[parts.face_component[f]];
+    ComponentMeasure& c = m.measures[m.parts.face_component[f]];
     ++c.faces;
     c.area += face_area(mesh, f);
   }
-  for (std::size_t c = 0; c < parts.count; ++c) out[c].volume = volumes.volume[c];
-  std::stable_sort(out.begin(), out.end(), [](const ComponentMeasure& a, const ComponentMeasure& b) {
+  for (std::size_t c = 0; c < m.parts.count; ++c) m.measures[c].volume = volumes.volume[c];
+  m.order.resize(m.parts.count);
+  for (std::size_t c = 0; c < m.parts.count; ++c) m.order[c] = c;
+  std::stable_sort(m.order.begin(), m.order.end(), [&](std::size_t x, std::size_t y) {
+    const ComponentMeasure &a = m.measures[x], &b = m.measures[y];
     if (a.cavity() != b.cavity()) return !a.cavity();
     return a.area > b.area;
   });
+  return m;
+}
+
+}  // namespace
+
+std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
+  const MeasuredComponents m = measured_components(mesh);
+  std::vector<ComponentMeasure> out;
+  out.reserve(m.order.size());
+  for (std::size_t c : m.order) out.push_back(m.measures[c]);
+  return out;
+}
+
+std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement) {
+  const MeasuredComponents m = measured_components(mesh);
+  // The shell each atom lines, when it lines exactly one (-2: several).
+  const std::size_t atoms = arrangement.area_per_sphere.size();
+  std::vector<std::int64_t> shell_of_atom(atoms, -1);
+  for (const ArrangementPatch& p : arrangement.patches) {
+    std::int64_t& s = shell_of_atom[p.sphere];
+    s = s == -1 || s == static_cast<std::int64_t>(p.shell) ? static_cast<std::int64_t>(p.shell) : -2;
+  }
+  std::vector<std::map<std::int64_t, double>> votes(m.parts.count);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::int32_t t = mesh.tag(f);
+    if (t < 0 || static_cast<std::size_t>(t) >= atoms || shell_of_atom[t] < 0) continue;
+    votes[m.parts.face_component[f]][shell_of_atom[t]] += face_area(mesh, f);
+  }
+  std::vector<std::int64_t> out;
+  out.reserve(m.order.size());
+  for (std::size_t c : m.order) {
+    std::int64_t best = -1;
+    double weight = 0;
+    for (const auto& [shell, w] : votes[c])
+      if (w > weight) {
+        best = shell;
+        weight = w;
+      }
+    out.push_back(best);
+  }
   return out;
 }
 

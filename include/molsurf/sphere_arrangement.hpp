@@ -1,0 +1,90 @@
+#pragma once
+// The exact arrangement of the true spheres on the boundary of their union (no triangles):
+// for every sphere, the circles its neighbours cut on it, the arcs of those circles that
+// bound its exposed part, the vertices where three spheres meet on the surface, and the
+// exposed spherical patches; the patches joined into shells (the outer surface and each
+// cavity). Areas and volumes follow analytically (Stokes' theorem on the sphere and the
+// divergence theorem), to floating-point rounding.
+//
+// For the solvent-accessible surface the spheres are the atoms' r_vdW + probe: a vertex is
+// then a probe position touching three atoms, and an arc the path of a probe rolling on
+// two (what the solvent-excluded surface is built from).
+//
+// Combinatorial decisions (which neighbours cut a sphere, which circles cross, whether a
+// point lies inside a ball) are exact: a floating-point filter, then rational arithmetic.
+// Tie rules: balls are open (a point on another sphere is exposed); a ball inside another
+// (or tangent to it from inside) is buried; of identical spheres the lowest index counts;
+// tangent spheres do not cut each other; of two neighbours cutting the same circle, the
+// lower index owns it. The result does not depend on the thread count.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "molsurf/vec3.hpp"
+
+namespace molsurf {
+
+// A point where three spheres meet on the surface (a probe touching three atoms). Of the
+// two points the three spheres share, `side` names which: the sign of the orientation of
+// (centre a, centre b, centre c, point) for the sorted atoms a < b < c.
+struct ArrangementVertex {
+  std::array<std::uint32_t, 3> spheres{};  // sorted
+  int side = 1;                            // +1 or -1
+  Vec3 point;                              // rounded to doubles
+};
+
+// An exposed arc on `sphere`, along the circle that `other` cuts on it, running so that the
+// exposed part lies on its left (seen from outside). A whole circle has no vertices.
+struct ArrangementArc {
+  std::uint32_t sphere = 0, other = 0;
+  std::int64_t from = -1, to = -1;  // vertex indices; -1 for a whole circle
+  double angle = 0;                 // radians swept about the circle's axis (0, 2 pi]
+  std::uint32_t patch = 0;          // index into SphereArrangement::patches
+};
+
+// A connected exposed region of one sphere.
+struct ArrangementPatch {
+  std::uint32_t sphere = 0;
+  double area = 0;
+  Vec3 vector_area;  // integral of the outward normal over the patch
+  std::uint32_t shell = 0;
+};
+
+// A connected component of the union's boundary: the outer surface, or a cavity (whose
+// volume, the divergence integral over its boundary, is negative).
+struct ArrangementShell {
+  double area = 0;
+  double volume = 0;   // signed: negative for a cavity
+  Vec3 centroid;       // of the shell's surface (area-weighted)
+  std::vector<std::uint32_t> spheres;  // the spheres with a patch on it (a cavity's lining atoms), sorted
+  bool cavity() const { return volume < 0; }
+};
+
+struct ArrangementStats {
+  std::size_t spheres = 0, buried = 0, duplicate = 0, circles = 0;
+  std::size_t exact_decisions = 0;     // decisions the floating-point filter left to rational arithmetic
+  std::size_t degenerate_points = 0;   // vertices on a fourth sphere (four or more spheres through a point)
+};
+
+struct SphereArrangement {
+  std::vector<ArrangementVertex> vertices;
+  std::vector<ArrangementArc> arcs;          // sphere by sphere
+  std::vector<ArrangementPatch> patches;     // sphere by sphere
+  std::vector<ArrangementShell> shells;      // the largest outer shell first, then by area
+  std::vector<double> area_per_sphere;
+  double area = 0, volume = 0;               // volume: of the union, cavities excluded
+  ArrangementStats stats;
+};
+
+struct ArrangementOptions {
+  int threads = 0;  // 0: OpenMP's default
+};
+
+// Throws std::invalid_argument when the spans differ in length or a radius or coordinate is
+// not finite or a radius is negative. Spheres of radius 0 are buried.
+SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const double> radii,
+                                  const ArrangementOptions& options = {});
+
+}  // namespace molsurf

@@ -1,0 +1,687 @@
+// The arrangement of the true spheres (include/molsurf/sphere_arrangement.hpp), sphere by
+// sphere in parallel, then joined:
+//  1. neighbours: which balls cut sphere i, which bury it (exact);
+//  2. circles: each pair of caps either crosses (two vertices), or one circle lies inside
+//     the other cap (covered), or they are apart (exact);
+//  3. exposed arcs: on each circle, the arcs between the caps that cross it, outside every
+//     cap. An end is decided by its angle when that is farther from every other cap's ends
+//     than the angles' rounding, and otherwise by the exact test of the vertex against the
+//     ball (whose answer all three spheres through the vertex share);
+//  4. cycles: arcs joined at their vertices; patches: cycles grouped into the connected
+//     exposed regions of the sphere (arc_integrals.hpp: each cycle's area on its exposed
+//     side, and which cycles lie on which side of each other);
+//  5. shells: patches that share a vertex or a whole circle, joined; area and volume per
+//     sphere, patch and shell by Stokes' and the divergence theorem.
+#include "molsurf/sphere_arrangement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+#include <tuple>
+
+#include "arrangement/arc_integrals.hpp"
+#include "arrangement/sphere_predicates.hpp"
+#include "common/parallel_exceptions.hpp"
+#include "common/thread_count_scope.hpp"
+#include "geometry/point_grid.hpp"
+
+namespace molsurf {
+
+namespace {
+
+using arrangement::Approx;
+using arrangement::CircleFrame;
+using arrangement::DecisionCounter;
+using arrangement::exact_sign;
+
+constexpr double kPi = std::numbers::pi, kTwoPi = 2 * std::numbers::pi;
+
+// A vertex (three spheres and a side) or, with c == kWholeCircle, the whole circle of two.
+struct Key {
+  std::uint32_t a = 0, b = 0, c = 0;
+  std::int32_t side = 0;
+  friend auto operator<=>(const Key&, const Key&) = default;
+};
+constexpr std::uint32_t kWholeCircle = 0xffffffffu;
+
+// The vertex on sphere i where circles j and k cross, on side s of w = D_j x D_k.
+Key vertex_key(std::uint32_t i, std::uint32_t j, std::uint32_t k, int s) {
+  std::uint32_t v[3] = {i, j, k};
+  int parity = 1;
+  for (int x = 0; x < 3; ++x)
+    for (int y = x + 1; y < 3; ++y)
+      if (v[y] < v[x]) parity = -parity;
+  std::sort(v, v + 3);
+  return {v[0], v[1], v[2], s * parity};
+}
+
+struct Cap {
+  std::uint32_t other = 0;
+  Vec3 d;           // c_other - c_i
+  CircleFrame frame;
+  bool covered = false;
+};
+
+struct Endpoint {
+  double theta = 0;
+  double margin = 0;  // bound on theta's rounding (radians)
+  std::uint32_t cap = 0;  // the cap whose boundary it is (index into caps)
+  int s = 0;              // -1: entering that cap counter-clockwise, +1: leaving it
+  Vec3 y;                 // relative to c_i
+};
+
+struct LocalArc {
+  std::uint32_t cap = 0;
+  double theta = 0, delta = 0;  // runs from theta to theta - delta (clockwise)
+  Key from, to;                 // unused for a whole circle
+  Vec3 from_point;              // relative to c_i
+  bool whole = false;
+  std::uint32_t patch = 0;      // local
+};
+
+struct LocalPatch {
+  double area = 0;
+  Vec3 vector_area;
+  std::vector<Key> keys;  // vertices and whole circles on its boundary
+};
+
+struct SphereResult {
+  bool buried = false, duplicate = false, broken = false;
+  std::size_t circles = 0, degenerate = 0;
+  double area = 0;
+  Vec3 vector_area;
+  std::vector<LocalArc> arcs;
+  std::vector<Cap> caps;  // only those with arcs are referenced
+  std::vector<LocalPatch> patches;
+  DecisionCounter decisions;
+};
+
+double wrap(double a) {  // into [0, 2 pi)
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+
+class SphereArranger {
+ public:
+  SphereArranger(std::span<const Vec3> c, std::span<const double> r, const geometry::PointGrid& grid)
+      : c_(c), r_(r), grid_(grid) {}
+
+  SphereResult arrange(std::uint32_t i) const {
+    SphereResult out;
+    if (!find_caps(i, out)) return out;
+    const std::vector<std::vector<Endpoint>> ends = cross_circles(i, out);
+    for (std::uint32_t j = 0; j < out.caps.size(); ++j)
+      if (!out.caps[j].covered) exposed_arcs(i, j, ends[j], out);
+    measure(i, out);
+    return out;
+  }
+
+ private:
+  // Step 1. False when sphere i is buried (inside another ball, or a later copy).
+  bool find_caps(std::uint32_t i, SphereResult& out) const {
+    const Vec3& ci = c_[i];
+    const double ri = r_[i];
+    if (ri == 0) {
+      out.buried = true;
+      return false;
+    }
+    bool buried = false;
+    grid_.for_each_near(ci, [&](std::size_t jj) {
+      const auto j = static_cast<std::uint32_t>(jj);
+      if (buried || j == i) return;
+      const Vec3& cj = c_[j];
+      const double rj = r_[j];
+      if (rj == 0) return;
+      if (cj == ci && rj == ri) {  // identical spheres: the lowest index counts
+        if (j < i) buried = out.duplicate = true;
+        return;
+      }
+      // Apart, or touching from outside: no cap.
+      if (exact_sign([&]<class T>() {
+            const auto d = arrangement::difference<T>(cj, ci);
+            return (T(ri) + T(rj)) * (T(ri) + T(rj)) - dot(d, d);
+          }, out.decisions) <= 0)
+        return;
+      // Nested (closed balls): ball i inside ball j buries sphere i; ball j inside ball i
+      // cuts nothing (a touching point at most).
+      auto nested = [&](double big, double small) {
+        return big >= small && exact_sign([&]<class T>() {
+                                 const auto d = arrangement::difference<T>(cj, ci);
+                                 return (T(big) - T(small)) * (T(big) - T(small)) - dot(d, d);
+                               }, out.decisions) >= 0;
+      };
+      if (nested(rj, ri)) {
+        buried = true;
+        return;
+      }
+      if (nested(ri, rj)) return;
+      Cap cap;
+      cap.other = j;
+      cap.d = cj - ci;
+      const double dn = norm(cap.d);
+      const double a = (dot(cap.d, cap.d) + (ri - rj) * (ri + rj)) / (2 * dn);  // plane's distance from c_i
+      const double c0 = std::clamp(a / ri, -1.0, 1.0);
+      cap.frame = arrangement::circle_frame(cap.d / dn, c0, std::sqrt(std::max(0.0, (1 - c0) * (1 + c0))));
+      out.caps.push_back(cap);
+    });
+    if (buried) {
+      out.buried = true;
+      out.caps.clear();
+      return false;
+    }
+    // The grid visits cells in a fixed order; sort so that the result depends on the input only.
+    std::sort(out.caps.begin(), out.caps.end(), [](const Cap& x, const Cap& y) { return x.other < y.other; });
+    out.circles = out.caps.size();
+    return true;
+  }
+
+  // Step 2: every pair of caps; the ends of the arcs each cap covers on the other's circle.
+  std::vector<std::vector<Endpoint>> cross_circles(std::uint32_t i, SphereResult& out) const {
+    std::vector<Cap>& caps = out.caps;
+    std::vector<std::vector<Endpoint>> ends(caps.size());
+    const Vec3& ci = c_[i];
+    const double ri = r_[i];
+    for (std::uint32_t x = 0; x < caps.size(); ++x)
+      for (std::uint32_t y = x + 1; y < caps.size(); ++y) {
+        const std::uint32_t j = caps[x].other, k = caps[y].other;
+        const Vec3 &cj = c_[j], &ck = c_[k];
+        const double rj = r_[j], rk = r_[k];
+        // Balls j and k apart: their caps are too (a sure floating-point decision).
+        const Vec3 djk = ck - cj;
+        if (dot(djk, djk) > (rj + rk) * (rj + rk) * (1 + 1e-9)) continue;
+        const auto pa = arrangement::circle_pair<Approx>(ci, ri, cj, rj, ck, rk);
+        auto certain = [](const Approx& a) { return std::isfinite(a.m) && std::fabs(a.v) > 1e-11 * a.m; };
+        int g_sign = certain(pa.g) ? (pa.g.v > 0 ? 1 : -1) : 0;
+        int q_sign = certain(pa.q) ? (pa.q.v > 0 ? 1 : -1) : 0;
+        if (g_sign == 0 || (g_sign > 0 && q_sign == 0)) {
+          ++out.decisions.exact;
+          const auto pe = arrangement::circle_pair<mpq_class>(ci, ri, cj, rj, ck, rk);
+          g_sign = sgn(pe.g);
+          q_sign = sgn(pe.q);
+        }
+        if (g_sign > 0 && q_sign > 0) {
+          add_crossing(i, x, y, ends, out);
+          continue;
+        }
+        // Not crossing: a circle inside the other cap is covered (the lower index owns a
+        // circle that two caps share; complementary caps cover each other's circle).
+        auto inside = [&](std::uint32_t p, std::uint32_t q) {  // circle p against cap q
+          const Vec3 &cp = c_[caps[p].other], &cq = c_[caps[q].other];
+          const double rp = r_[caps[p].other], rq = r_[caps[q].other];
+          const int centre = exact_sign([&]<class T>() {
+            const auto dp = arrangement::difference<T>(cp, ci), dq = arrangement::difference<T>(cq, ci);
+            const T ep = arrangement::sphere_term(dp, ri, rp), eq = arrangement::sphere_term(dq, ri, rq);
+            return ep * dot(dq, dp) - eq * dot(dp, dp);
+          }, out.decisions);
+          if (centre != 0) return centre > 0;
+          const int same = exact_sign([&]<class T>() {
+            return dot(arrangement::difference<T>(cp, ci), arrangement::difference<T>(cq, ci));
+          }, out.decisions);
+          return same < 0 || caps[q].other < caps[p].other;
+        };
+        if (inside(x, y)) caps[x].covered = true;
+        if (inside(y, x)) caps[y].covered = true;
+      }
+    return ends;
+  }
+
+  void add_crossing(std::uint32_t i, std::uint32_t x, std::uint32_t y, std::vector<std::vector<Endpoint>>& ends,
+                    SphereResult& out) const {
+    const Cap &cx = out.caps[x], &cy = out.caps[y];
+    const double ri = r_[i];
+    const double rj = r_[cx.other], rk = r_[cy.other];
+    // The two points in floating point: y0 + s sqrt(h) w / |w|.
+    const Vec3 &dj = cx.d, &dk = cy.d;
+    const double jj = dot(dj, dj), kk = dot(dk, dk), jk = dot(dj, dk);
+    const double ej = jj + (ri - rj) * (ri + rj), ek = kk + (ri - rk) * (ri + rk);
+    const Vec3 w = cross(dj, dk);
+    const double g = dot(w, w);
+    const Vec3 y0 = ((ej * kk - ek * jk) * dj + (ek * jj - ej * jk) * dk) / (2 * g);
+    const double h = std::max(0.0, ri * ri - dot(y0, y0));
+    const double root = std::sqrt(h);
+    const Vec3 wn = w / std::sqrt(g);
+    // Rounding: the positions' error grows as 1/sqrt(h) near tangency and the angles' as
+    // 1/rho on small circles; a thousand times a generous estimate.
+    const double position_error = 1e-13 * ri * (1 + ri / std::max(root, 1e-300));
+    for (int s : {-1, 1}) {
+      const Vec3 p = y0 + (s * root) * wn;
+      // On circle x, s = -1 enters cap y counter-clockwise; on circle y (w reversed) it leaves cap x.
+      ends[x].push_back({wrap(cx.frame.angle_of(p)), 1e-10 + position_error / (ri * cx.frame.s0), y, s, p});
+      ends[y].push_back({wrap(cy.frame.angle_of(p)), 1e-10 + position_error / (ri * cy.frame.s0), x, -s, p});
+    }
+  }
+
+  // Exact: is the vertex where circles j and k (cap indices) cross, on side s of
+  // D_j x D_k, inside ball l (open)?
+  bool vertex_inside(std::uint32_t i, const SphereResult& out, std::uint32_t j, std::uint32_t k, int s,
+                     std::uint32_t l, DecisionCounter& decisions) const {
+    ++decisions.exact;
+    const std::uint32_t aj = out.caps[j].other, ak = out.caps[k].other, al = out.caps[l].other;
+    const auto p = arrangement::circle_pair<mpq_class>(c_[i], r_[i], c_[aj], r_[aj], c_[ak], r_[ak]);
+    const auto dl = arrangement::difference<mpq_class>(c_[al], c_[i]);
+    const mpq_class el = arrangement::sphere_term(dl, r_[i], r_[al]);
+    const mpq_class xq = p.g * (dot(dl, p.y0) - el * p.g);
+    const mpq_class yq = mpq_class(s) * dot(dl, p.w);
+    return arrangement::sign_plus_root(xq, yq, p.q * p.g) > 0;
+  }
+
+  // Step 3 for circle j (cap index).
+  void exposed_arcs(std::uint32_t i, std::uint32_t j, const std::vector<Endpoint>& ends, SphereResult& out) const {
+    const Cap& cap = out.caps[j];
+    if (ends.empty()) {
+      LocalArc arc;
+      arc.cap = j;
+      arc.whole = true;
+      arc.theta = 0;
+      arc.delta = kTwoPi;
+      out.arcs.push_back(arc);
+      return;
+    }
+    // Each crossing cap's interval [entry, exit] counter-clockwise; ends come in pairs.
+    struct Interval {
+      double from, length, margin_from, margin_to;
+      std::uint32_t cap;
+    };
+    std::vector<Interval> intervals;
+    intervals.reserve(ends.size() / 2);
+    for (std::size_t e = 0; e < ends.size(); e += 2) {
+      const Endpoint& in = ends[e].s < 0 ? ends[e] : ends[e + 1];
+      const Endpoint& ex = ends[e].s < 0 ? ends[e + 1] : ends[e];
+      intervals.push_back({in.theta, wrap(ex.theta - in.theta), in.margin, ex.margin, in.cap});
+    }
+    struct Exposed {
+      double theta;
+      int s;
+      std::size_t end;
+    };
+    std::vector<Exposed> exposed;
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      const Endpoint& p = ends[e];
+      bool covered = false;
+      for (const Interval& iv : intervals) {
+        if (iv.cap == p.cap) continue;
+        const double rel = wrap(p.theta - iv.from);
+        const double to_from = std::min(rel, kTwoPi - rel), to_end = std::fabs(rel - iv.length);
+        const double near = std::min(to_from - iv.margin_from, std::min(to_end, kTwoPi - to_end) - iv.margin_to);
+        if (near > p.margin) {
+          if (rel < iv.length) covered = true;
+        } else {
+          // s is relative to D_j x D_p.cap: the endpoint of cap p.cap on circle j.
+          covered = vertex_inside(i, out, j, p.cap, p.s, iv.cap, out.decisions);
+          if (!covered) {
+            // On the boundary of that ball? Then four spheres meet here (exposed: open balls).
+            ++out.degenerate;
+          }
+        }
+        if (covered) break;
+      }
+      if (!covered) exposed.push_back({p.theta, p.s, e});
+    }
+    if (exposed.empty()) return;  // the whole circle is covered by the union of the crossing caps
+    // Counter-clockwise, exposed arcs run from a leaving end (s = +1) to the next entering
+    // one; at equal angles the leaving end first (the point alone is exposed).
+    std::sort(exposed.begin(), exposed.end(), [](const Exposed& a, const Exposed& b) {
+      return a.theta != b.theta ? a.theta < b.theta : a.s > b.s;
+    });
+    const std::size_t n = exposed.size();
+    for (std::size_t a = 0; a < n; ++a) {
+      if (exposed[a].s < 0) continue;
+      // The next entering end, counter-clockwise; leaving ends in between (rounding at a
+      // degenerate point) are passed over.
+      std::size_t b = (a + 1) % n;
+      std::size_t steps = 1;
+      while (exposed[b].s > 0 && steps < n) {
+        b = (b + 1) % n;
+        ++steps;
+      }
+      if (exposed[b].s > 0) {
+        out.broken = true;
+        continue;
+      }
+      if (steps > 1) out.broken = true;
+      const Endpoint &leave = ends[exposed[a].end], &enter = ends[exposed[b].end];
+      LocalArc arc;
+      arc.cap = j;
+      double delta = enter.theta - leave.theta;
+      if (b <= a) delta += kTwoPi;  // across the angle's origin
+      if (b == a) delta = kTwoPi;
+      arc.theta = enter.theta;
+      arc.delta = std::max(0.0, delta);
+      arc.from = vertex_key(i, cap.other, out.caps[enter.cap].other, enter.s);
+      arc.to = vertex_key(i, cap.other, out.caps[leave.cap].other, 1);
+      arc.from_point = enter.y;
+      out.arcs.push_back(arc);
+    }
+  }
+
+  // Steps 4 and 5 on one sphere: area, vector area, cycles and patches.
+  void measure(std::uint32_t i, SphereResult& out) const {
+    const double r2 = r_[i] * r_[i];
+    if (out.caps.empty() || out.arcs.empty()) {
+      // No boundary: the whole sphere is exposed, or nothing is (every circle covered).
+      const bool whole = out.caps.empty();
+      out.area = whole ? 4 * kPi * r2 : 0;
+      if (whole) out.patches.push_back({out.area, {}, {}});
+      return;
+    }
+    for (const LocalArc& arc : out.arcs)
+      out.vector_area += r2 * arrangement::half_moment(out.caps[arc.cap].frame, arc.theta, -arc.delta);
+    out.area = r2 * single_pole_area(out);
+
+    // Cycles: each arc continues with the arc that starts where it ends.
+    const std::size_t m = out.arcs.size();
+    std::vector<std::int64_t> next(m, -1);
+    for (std::size_t a = 0; a < m; ++a) {
+      if (out.arcs[a].whole) {
+        next[a] = static_cast<std::int64_t>(a);
+        continue;
+      }
+      for (std::size_t b = 0; b < m; ++b)
+        if (!out.arcs[b].whole && out.arcs[b].from == out.arcs[a].to) {
+          if (next[a] >= 0) out.broken = true;  // two arcs leave one vertex
+          next[a] = static_cast<std::int64_t>(b);
+        }
+      if (next[a] < 0) out.broken = true;
+    }
+    std::vector<std::vector<std::uint32_t>> cycles;
+    std::vector<std::int64_t> cycle_of(m, -1);
+    for (std::size_t a = 0; a < m && !out.broken; ++a) {
+      if (cycle_of[a] >= 0) continue;
+      std::vector<std::uint32_t> cycle;
+      std::size_t b = a;
+      while (cycle_of[b] < 0) {
+        cycle_of[b] = static_cast<std::int64_t>(cycles.size());
+        cycle.push_back(static_cast<std::uint32_t>(b));
+        b = static_cast<std::size_t>(next[b]);
+      }
+      if (b != a) out.broken = true;  // joined a cycle in its middle
+      cycles.push_back(std::move(cycle));
+    }
+    if (out.broken || cycles.size() == 1) {
+      // One patch (or, at a degenerate point the cycles do not close, the whole sphere's
+      // exposed part taken as one patch).
+      LocalPatch patch{out.area, out.vector_area, {}};
+      for (LocalArc& arc : out.arcs) arc.patch = 0;
+      out.patches.push_back(std::move(patch));
+      add_keys(i, out);
+      return;
+    }
+    group_cycles(r2, cycles, out);
+    add_keys(i, out);
+  }
+
+  // The sphere's exposed area on the unit sphere, with one pole for all arcs: a pole whose
+  // antipode lies far from every circle, so that whether it is exposed is certain.
+  static double single_pole_area(const SphereResult& out) {
+    double best = -1;
+    Vec3 best_q;
+    for (int x = -1; x <= 1; ++x)
+      for (int y = -1; y <= 1; ++y)
+        for (int z = -1; z <= 1; ++z) {
+          if (x == 0 && y == 0 && z == 0) continue;
+          const Vec3 q = normalized(Vec3{double(x), double(y), double(z)});
+          const double clearance = clearance_from_circles(out, q);
+          if (clearance > best) {
+            best = clearance;
+            best_q = q;
+          }
+        }
+    for (int t = 0; best < 1e-6 && t < 256; ++t) {  // a spiral of further candidates
+      const double zc = 1 - (2 * t + 1) / 256.0, rho = std::sqrt(1 - zc * zc), phi = t * 2.399963229728653;
+      const Vec3 q{rho * std::cos(phi), rho * std::sin(phi), zc};
+      const double clearance = clearance_from_circles(out, q);
+      if (clearance > best) {
+        best = clearance;
+        best_q = q;
+      }
+    }
+    bool q_exposed = true;
+    for (const Cap& cap : out.caps) q_exposed &= dot(cap.frame.n, best_q) <= cap.frame.c0;
+    const Vec3 p = -best_q;
+    double area = q_exposed ? 4 * kPi : 0;
+    for (const LocalArc& arc : out.arcs)
+      area += arrangement::pole_form_integral(out.caps[arc.cap].frame, p, arc.theta, -arc.delta);
+    return std::clamp(area, 0.0, 4 * kPi);
+  }
+
+  static double clearance_from_circles(const SphereResult& out, const Vec3& q) {
+    double clearance = 2;
+    for (const Cap& cap : out.caps) clearance = std::min(clearance, std::fabs(dot(cap.frame.n, q) - cap.frame.c0));
+    return clearance;
+  }
+
+  // The area on the exposed side of a cycle (unit sphere), taking the pole's antipode in a
+  // cap on the cycle's other side, as far from the cycle's circles as the caps allow.
+  static double cycle_area(const SphereResult& out, const std::vector<std::uint32_t>& cycle) {
+    double best = -1;
+    Vec3 best_q;
+    for (std::uint32_t a : cycle) {
+      const Vec3 q = out.caps[out.arcs[a].cap].frame.n;
+      double clearance = 2;
+      for (std::uint32_t b : cycle) {
+        const CircleFrame& f = out.caps[out.arcs[b].cap].frame;
+        clearance = std::min(clearance, std::fabs(dot(f.n, q) - f.c0));
+      }
+      if (clearance > best) {
+        best = clearance;
+        best_q = q;
+      }
+    }
+    return cycle_integral(out, cycle, -best_q);
+  }
+
+  static double cycle_integral(const SphereResult& out, const std::vector<std::uint32_t>& cycle, const Vec3& p) {
+    double sum = 0;
+    for (std::uint32_t a : cycle) {
+      const LocalArc& arc = out.arcs[a];
+      sum += arrangement::pole_form_integral(out.caps[arc.cap].frame, p, arc.theta, -arc.delta);
+    }
+    return sum;
+  }
+
+  // Cycles a and b bound the same exposed region when each lies on the other's exposed
+  // side and no third cycle separates them (the regions and cycles of a sphere form a tree).
+  static void group_cycles(double r2, const std::vector<std::vector<std::uint32_t>>& cycles, SphereResult& out) {
+    const std::size_t n = cycles.size();
+    std::vector<double> side_area(n);
+    for (std::size_t a = 0; a < n; ++a) side_area[a] = cycle_area(out, cycles[a]);
+    // in[a][b]: a point of cycle b lies on cycle a's exposed side.
+    std::vector<char> in(n * n, 1);
+    for (std::size_t b = 0; b < n; ++b) {
+      const LocalArc& arc = out.arcs[cycles[b][0]];
+      const Vec3 x = out.caps[arc.cap].frame.point(arc.theta - arc.delta / 2);
+      for (std::size_t a = 0; a < n; ++a)
+        if (a != b) in[a * n + b] = side_area[a] - cycle_integral(out, cycles[a], -x) > 2 * kPi;
+    }
+    std::vector<std::size_t> parent(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](std::size_t v) {
+      while (parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b) {
+        if (!in[a * n + b] || !in[b * n + a]) continue;
+        bool separated = false;
+        for (std::size_t c = 0; c < n && !separated; ++c)
+          if (c != a && c != b) separated = in[c * n + a] != in[c * n + b];
+        if (!separated) parent[find(a)] = find(b);
+      }
+    std::vector<std::int64_t> patch_of(n, -1);
+    std::vector<std::size_t> cycles_in;
+    for (std::size_t a = 0; a < n; ++a) {
+      const std::size_t root = find(a);
+      if (patch_of[root] < 0) {
+        patch_of[root] = static_cast<std::int64_t>(out.patches.size());
+        out.patches.push_back({});
+        cycles_in.push_back(0);
+      }
+      const auto p = static_cast<std::size_t>(patch_of[root]);
+      out.patches[p].area += side_area[a];
+      ++cycles_in[p];
+      for (std::uint32_t arc : cycles[a]) {
+        out.arcs[arc].patch = static_cast<std::uint32_t>(p);
+        const LocalArc& la = out.arcs[arc];
+        out.patches[p].vector_area +=
+            r2 * arrangement::half_moment(out.caps[la.cap].frame, la.theta, -la.delta);
+      }
+    }
+    for (std::size_t p = 0; p < out.patches.size(); ++p)
+      out.patches[p].area = r2 * std::clamp(out.patches[p].area - (cycles_in[p] - 1.0) * 4 * kPi, 0.0, 4 * kPi);
+  }
+
+  // The boundary keys of each patch: its arcs' vertices and whole circles.
+  void add_keys(std::uint32_t i, SphereResult& out) const {
+    for (const LocalArc& arc : out.arcs) {
+      std::vector<Key>& keys = out.patches[arc.patch].keys;
+      if (arc.whole) {
+        const std::uint32_t j = out.caps[arc.cap].other;
+        keys.push_back({std::min(i, j), std::max(i, j), kWholeCircle, 0});
+      } else {
+        keys.push_back(arc.from);
+      }
+    }
+  }
+
+  std::span<const Vec3> c_;
+  std::span<const double> r_;
+  const geometry::PointGrid& grid_;
+};
+
+}  // namespace
+
+SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const double> radii,
+                                  const ArrangementOptions& options) {
+  if (centres.size() != radii.size()) throw std::invalid_argument("arrange_spheres: one radius per centre");
+  if (centres.size() >= kWholeCircle) throw std::invalid_argument("arrange_spheres: too many spheres");
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const Vec3& c = centres[i];
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !std::isfinite(radii[i]) ||
+        radii[i] < 0)
+      throw std::invalid_argument("arrange_spheres: sphere " + std::to_string(i) +
+                                  " has a coordinate or radius that is not finite, or a negative radius");
+  }
+  const ThreadCountScope threads(options.threads);
+  SphereArrangement result;
+  const std::size_t n = centres.size();
+  result.area_per_sphere.assign(n, 0);
+  result.stats.spheres = n;
+  if (n == 0) return result;
+  const double largest = *std::max_element(radii.begin(), radii.end());
+  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return radii[i] > 0; });
+  const SphereArranger arranger(centres, radii, grid);
+  std::vector<SphereResult> spheres(n);
+  ParallelExceptions errors;
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+    errors.run(i, [&] { spheres[i] = arranger.arrange(static_cast<std::uint32_t>(i)); });
+  errors.rethrow();
+
+  // Vertices: every arc's ends, once each, in key order.
+  std::vector<std::pair<Key, Vec3>> seen;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (const LocalArc& arc : spheres[i].arcs)
+      if (!arc.whole) seen.emplace_back(arc.from, centres[i] + arc.from_point);
+  std::sort(seen.begin(), seen.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Key> vertex_keys;
+  for (const auto& [key, point] : seen)
+    if (vertex_keys.empty() || vertex_keys.back() != key) {
+      vertex_keys.push_back(key);
+      result.vertices.push_back({{key.a, key.b, key.c}, key.side, point});
+    }
+  auto vertex_index = [&](const Key& key) -> std::int64_t {
+    const auto it = std::lower_bound(vertex_keys.begin(), vertex_keys.end(), key);
+    return it != vertex_keys.end() && *it == key ? it - vertex_keys.begin() : -1;
+  };
+
+  // Arcs and patches in global numbering; shells by the keys the patches share.
+  std::vector<std::pair<Key, std::uint32_t>> patch_keys;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    SphereResult& s = spheres[i];
+    result.area_per_sphere[i] = s.area;
+    result.stats.buried += s.buried;
+    result.stats.duplicate += s.duplicate;
+    result.stats.circles += s.circles;
+    result.stats.exact_decisions += s.decisions.exact;
+    result.stats.degenerate_points += s.degenerate;
+    const auto first_patch = static_cast<std::uint32_t>(result.patches.size());
+    for (const LocalArc& arc : s.arcs) {
+      ArrangementArc a;
+      a.sphere = i;
+      a.other = s.caps[arc.cap].other;
+      a.from = arc.whole ? -1 : vertex_index(arc.from);
+      a.to = arc.whole ? -1 : vertex_index(arc.to);
+      a.angle = arc.delta;
+      a.patch = first_patch + arc.patch;
+      result.arcs.push_back(a);
+    }
+    for (const LocalPatch& p : s.patches) {
+      const auto index = static_cast<std::uint32_t>(result.patches.size());
+      result.patches.push_back({i, p.area, p.vector_area, 0});
+      for (const Key& key : p.keys) patch_keys.emplace_back(key, index);
+    }
+  }
+  std::sort(patch_keys.begin(), patch_keys.end());
+  const std::size_t patches = result.patches.size();
+  std::vector<std::uint32_t> parent(patches);
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (std::size_t k = 1; k < patch_keys.size(); ++k)
+    if (patch_keys[k].first == patch_keys[k - 1].first) {
+      const std::uint32_t a = find(patch_keys[k].second), b = find(patch_keys[k - 1].second);
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+
+  // Shell measures, each about its own first sphere's centre (the divergence theorem's
+  // origin is free; a near one keeps the sum's cancellation small).
+  std::vector<std::int64_t> shell_of(patches, -1);
+  std::vector<Vec3> origin;
+  std::vector<ArrangementShell> shells;
+  for (std::uint32_t p = 0; p < patches; ++p) {
+    const std::uint32_t root = find(p);
+    if (shell_of[root] < 0) {
+      shell_of[root] = static_cast<std::int64_t>(shells.size());
+      shells.emplace_back();
+      origin.push_back(centres[result.patches[p].sphere]);
+    }
+    const auto s = static_cast<std::size_t>(shell_of[root]);
+    ArrangementPatch& patch = result.patches[p];
+    const std::uint32_t i = patch.sphere;
+    ArrangementShell& shell = shells[s];
+    shell.area += patch.area;
+    shell.volume += (radii[i] * patch.area + dot(centres[i] - origin[s], patch.vector_area)) / 3;
+    shell.centroid += (centres[i] - origin[s]) * patch.area + radii[i] * patch.vector_area;
+    if (shell.spheres.empty() || shell.spheres.back() != i) shell.spheres.push_back(i);
+    patch.shell = static_cast<std::uint32_t>(s);
+  }
+  for (std::size_t s = 0; s < shells.size(); ++s)
+    shells[s].centroid = shells[s].area > 0 ? origin[s] + shells[s].centroid / shells[s].area : origin[s];
+  // The largest outer shell first, then by area.
+  std::vector<std::size_t> order(shells.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    if (shells[x].cavity() != shells[y].cavity()) return !shells[x].cavity();
+    return shells[x].area > shells[y].area;
+  });
+  std::vector<std::uint32_t> rank(shells.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    rank[order[k]] = static_cast<std::uint32_t>(k);
+    result.shells.push_back(std::move(shells[order[k]]));
+  }
+  for (ArrangementPatch& patch : result.patches) patch.shell = rank[patch.shell];
+  for (ArrangementShell& shell : result.shells) {
+    std::sort(shell.spheres.begin(), shell.spheres.end());
+    shell.spheres.erase(std::unique(shell.spheres.begin(), shell.spheres.end()), shell.spheres.end());
+    result.volume += shell.volume;
+  }
+  for (double a : result.area_per_sphere) result.area += a;
+  return result;
+}
+
+}  // namespace molsurf
