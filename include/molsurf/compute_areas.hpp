@@ -21,4 +21,7 @@ struct ComputedAreas {
 // Only spheres.probe is read of the sphere options. threads: 0 keeps OpenMP's default.
 ComputedAreas compute_areas(std::span<const Atom> atoms, const SphereOptions& spheres, int threads = 0);
 
+// Each atom's exact area: all of it, or (outer_only) only what lies on the outer shells.
+std::vector<double> exact_atom_area(const SphereArrangement& arrangement, bool outer_only = false);
+
 }  // namespace molsurf

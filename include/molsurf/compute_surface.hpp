@@ -23,6 +23,7 @@
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/resource_limits.hpp"
+#include "molsurf/sphere_arrangement.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
 
@@ -42,6 +43,9 @@ struct ComputeSurfaceOptions {
   // The exact self-intersection test (the check's expensive part). Without it, closed,
   // manifold, oriented, outward and non-degenerate are still required.
   bool check_self_intersections = true;
+  // Also the exact arrangement of the true spheres (compute_areas.hpp): exact areas and
+  // volumes per atom, shell and in total, beside the facets' own.
+  bool exact_areas = true;
   // Refuse, before any sphere is built, spheres with more faces than this in all
   // (check_sphere_resources); `source` names the input in that message.
   std::uint64_t max_sphere_faces = kDefaultMaxSphereFaces;
@@ -88,7 +92,11 @@ struct ComputedSurface {
   std::optional<CleanupStats> cleanup;   // absent when cleanup is off
   Quality quality_before;                // of the union, before cleanup
   Quality quality_after;                 // of `mesh` (equal to quality_before without cleanup)
-  SurfaceMeasures measures;
+  SurfaceMeasures measures;  // the facets'
+  // The true spheres' arrangement (with exact_areas; empty otherwise): sphere i is atom i.
+  SphereArrangement exact;
+  // The shell of `exact` each of measures.components follows (shells_of_components).
+  std::vector<std::int64_t> component_shells;
   ComputeSurfaceTimings seconds;
   int threads = 1;  // used for every stage
 };

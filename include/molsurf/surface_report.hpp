@@ -2,6 +2,7 @@
 // The report of a surface job: its measures (surface_measures.hpp), quality, cleanup and
 // check, rendered as text, JSON and CSV.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -14,6 +15,7 @@
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
+#include "molsurf/sphere_arrangement.hpp"
 #include "molsurf/surface_measures.hpp"
 
 namespace molsurf {
@@ -21,6 +23,30 @@ namespace molsurf {
 struct StageTimes {  // seconds
   double read = 0, surface = 0, cleanup = 0, write = 0, check = 0;
 };
+
+// One shell of the true spheres' union (sphere_arrangement.hpp): the outer surface or a
+// cavity, with the mesh component that follows it.
+struct ShellReport {
+  bool cavity = false;
+  double area = 0, volume = 0;  // volume unsigned: a cavity's is the void's
+  Vec3 centroid;                // of the shell's surface
+  std::vector<std::uint32_t> atoms;  // the atoms lining it (indices into the structure)
+  std::int64_t mesh_component = -1;  // index into SurfaceReport::components; -1: none
+};
+
+// The exact numbers: from the true spheres, not the facets.
+struct ExactReport {
+  double area = 0, volume = 0;
+  std::vector<ShellReport> shells;  // the largest outer shell first, then by area
+  std::size_t vertices = 0, arcs = 0, buried_atoms = 0, exact_decisions = 0, degenerate_points = 0;
+  double seconds = 0;
+};
+
+// The exact report of `arrangement`; component_shells (shells_of_components) links the
+// mesh's components to it (empty without a mesh). outer_only: the cavities left out (area
+// and volume those of the outer shells).
+ExactReport make_exact_report(const SphereArrangement& arrangement, std::span<const std::int64_t> component_shells,
+                              bool outer_only = false);
 
 struct SurfaceReport {
   ReadReport input;
@@ -36,6 +62,12 @@ struct SurfaceReport {
   int threads = 1;
   std::filesystem::path output;
   bool outer_only = false;
+  // area and volume above are the facets'; these the true spheres' (absent when not computed).
+  std::optional<ExactReport> exact;
+  // The mesh components (index as in `components`) that no true shell explains: voids of the
+  // facets inside the true union (a cavity in the mesh only).
+  std::vector<std::size_t> artefact_components;
+  bool areas_only = false;  // no mesh: faces, quality, cleanup and check are absent
 };
 
 SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);

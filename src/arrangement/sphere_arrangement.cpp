@@ -62,19 +62,20 @@ struct Cap {
   std::uint32_t other = 0;
   Vec3 d;           // c_other - c_i
   CircleFrame frame;
-  bool covered = false;
+  bool covered = false;  // its circle lies in another cap (and so does the cap)
 };
 
 struct Endpoint {
-  double theta = 0;
-  double margin = 0;  // bound on theta's rounding (radians)
+  std::uint32_t circle = 0;  // the cap whose circle it lies on
+  double theta = 0;   // pseudo-angle on the circle
+  double margin = 0;  // bound on theta's rounding
   std::uint32_t cap = 0;  // the cap whose boundary it is (index into caps)
   int s = 0;              // -1: entering that cap counter-clockwise, +1: leaving it
   Vec3 y;                 // relative to c_i
 };
 
 struct LocalArc {
-  std::uint32_t cap = 0;
+  std::uint32_t cap = 0, other = 0;
   double theta = 0, delta = 0;  // runs from theta to theta - delta (clockwise)
   Key from, to;                 // unused for a whole circle
   Vec3 from_point;              // relative to c_i
@@ -90,18 +91,30 @@ struct LocalPatch {
 
 struct SphereResult {
   bool buried = false, duplicate = false, broken = false;
+  bool covered = false;  // two caps cover the whole sphere
   std::size_t circles = 0, degenerate = 0;
   double area = 0;
   Vec3 vector_area;
   std::vector<LocalArc> arcs;
-  std::vector<Cap> caps;  // only those with arcs are referenced
+  std::vector<Cap> caps;  // released once the sphere is measured
   std::vector<LocalPatch> patches;
   DecisionCounter decisions;
 };
 
-double wrap(double a) {  // into [0, 2 pi)
-  a = std::fmod(a, kTwoPi);
-  return a < 0 ? a + kTwoPi : a;
+// Positions on a circle by a pseudo-angle in [0, 4) (the "diamond angle" of the point's
+// coordinates in the circle's frame): increasing with the angle, with a derivative between
+// 1/2 and 1 per radian, so an angle's error bound bounds it too; no transcendental call.
+constexpr double kTurn = 4;
+double pseudo_angle(double x, double y) {
+  const double ax = std::fabs(x), ay = std::fabs(y), t = ay / (ax + ay);  // 0/0 only at the axis
+  const double q = y >= 0 ? (x >= 0 ? t : 2 - t) : (x < 0 ? 2 + t : 4 - t);
+  return q >= kTurn || q != q ? 0 : q;
+}
+double wrap(double a) {  // a in (-2 turns, 2 turns) into [0, 1 turn)
+  a = a < 0 ? a + kTurn : a;
+  a = a < 0 ? a + kTurn : a;
+  a = a >= kTurn ? a - kTurn : a;
+  return a >= kTurn ? a - kTurn : a;
 }
 
 class SphereArranger {
@@ -112,10 +125,30 @@ class SphereArranger {
   SphereResult arrange(std::uint32_t i) const {
     SphereResult out;
     if (!find_caps(i, out)) return out;
-    const std::vector<std::vector<Endpoint>> ends = cross_circles(i, out);
+    // Scratch arrays reused sphere after sphere by each thread.
+    thread_local std::vector<Endpoint> raw, ends;
+    thread_local std::vector<std::uint32_t> offset;
+    raw.clear();
+    cross_circles(i, raw, out);
+    if (out.covered) {
+      out.caps.clear();
+      return out;
+    }
+    // The ends grouped by circle, in the order they were found (a crossing's two ends
+    // stay next to each other).
+    offset.assign(out.caps.size() + 1, 0);
+    for (const Endpoint& e : raw) ++offset[e.circle + 1];
+    for (std::size_t j = 0; j < out.caps.size(); ++j) offset[j + 1] += offset[j];
+    ends.resize(raw.size());
+    for (const Endpoint& e : raw) ends[offset[e.circle]++] = e;
+    for (std::size_t j = out.caps.size(); j > 0; --j) offset[j] = offset[j - 1];
+    offset[0] = 0;
     for (std::uint32_t j = 0; j < out.caps.size(); ++j)
-      if (!out.caps[j].covered) exposed_arcs(i, j, ends[j], out);
+      if (!out.caps[j].covered)
+        exposed_arcs(i, j, std::span<const Endpoint>(ends.data() + offset[j], offset[j + 1] - offset[j]), out);
     measure(i, out);
+    for (LocalArc& arc : out.arcs) arc.other = out.caps[arc.cap].other;
+    out.caps = {};  // the joined arrangement needs only the arcs and patches
     return out;
   }
 
@@ -139,8 +172,12 @@ class SphereArranger {
         if (j < i) buried = out.duplicate = true;
         return;
       }
-      // Apart, or touching from outside: no cap.
-      if (exact_sign([&]<class T>() {
+      // Apart, or touching from outside: no cap. Floating point decides when the squared
+      // distance is clearly apart from the bound (its rounding is some 1e-16 of it).
+      const Vec3 dd = cj - ci;
+      const double d2 = dot(dd, dd), reach = (ri + rj) * (ri + rj);
+      if (d2 > reach * (1 + 1e-12)) return;
+      if (d2 >= reach * (1 - 1e-12) && exact_sign([&]<class T>() {
             const auto d = arrangement::difference<T>(cj, ci);
             return (T(ri) + T(rj)) * (T(ri) + T(rj)) - dot(d, d);
           }, out.decisions) <= 0)
@@ -148,10 +185,11 @@ class SphereArranger {
       // Nested (closed balls): ball i inside ball j buries sphere i; ball j inside ball i
       // cuts nothing (a touching point at most).
       auto nested = [&](double big, double small) {
-        return big >= small && exact_sign([&]<class T>() {
-                                 const auto d = arrangement::difference<T>(cj, ci);
-                                 return (T(big) - T(small)) * (T(big) - T(small)) - dot(d, d);
-                               }, out.decisions) >= 0;
+        if (big < small || d2 > (big - small) * (big - small) * (1 + 1e-12)) return false;
+        return exact_sign([&]<class T>() {
+                 const auto d = arrangement::difference<T>(cj, ci);
+                 return (T(big) - T(small)) * (T(big) - T(small)) - dot(d, d);
+               }, out.decisions) >= 0;
       };
       if (nested(rj, ri)) {
         buried = true;
@@ -179,11 +217,12 @@ class SphereArranger {
   }
 
   // Step 2: every pair of caps; the ends of the arcs each cap covers on the other's circle.
-  std::vector<std::vector<Endpoint>> cross_circles(std::uint32_t i, SphereResult& out) const {
+  void cross_circles(std::uint32_t i, std::vector<Endpoint>& ends, SphereResult& out) const {
     std::vector<Cap>& caps = out.caps;
-    std::vector<std::vector<Endpoint>> ends(caps.size());
     const Vec3& ci = c_[i];
     const double ri = r_[i];
+    thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> crossings;
+    crossings.clear();
     for (std::uint32_t x = 0; x < caps.size(); ++x)
       for (std::uint32_t y = x + 1; y < caps.size(); ++y) {
         const std::uint32_t j = caps[x].other, k = caps[y].other;
@@ -192,6 +231,35 @@ class SphereArranger {
         // Balls j and k apart: their caps are too (a sure floating-point decision).
         const Vec3 djk = ck - cj;
         if (dot(djk, djk) > (rj + rk) * (rj + rk) * (1 + 1e-9)) continue;
+        // Most pairs are decided by the caps' angular radii and the angle between their
+        // axes (cosines, all of magnitude 1 or less, with errors near 1e-16 that grow as
+        // 1/sin on tiny circles): crossing when |a_x - a_y| < angle < a_x + a_y (or the
+        // complement's), nested below that, apart or complementary above.
+        {
+          const CircleFrame &fx = caps[x].frame, &fy = caps[y].frame;
+          const double cosine = dot(fx.n, fy.n), cc = fx.c0 * fy.c0, ss = fx.s0 * fy.s0;
+          const double margin = 1e-9 * (1 + 1e-5 / (ss + 1e-300));
+          if (cosine > cc - ss + margin && cosine < cc + ss - margin) {
+            crossings.emplace_back(x, y);
+            continue;
+          }
+          if (cosine < cc - ss - margin) {
+            if (fx.c0 + fy.c0 > margin) continue;  // caps apart
+            if (fx.c0 + fy.c0 < -margin) {         // complements apart: the two caps cover the sphere
+              out.covered = true;
+              return;
+            }
+          } else if (cosine > cc + ss + margin) {  // nested: the smaller circle inside the larger cap
+            if (fx.c0 > fy.c0 + margin) {
+              caps[x].covered = true;
+              continue;
+            }
+            if (fy.c0 > fx.c0 + margin) {
+              caps[y].covered = true;
+              continue;
+            }
+          }
+        }
         const auto pa = arrangement::circle_pair<Approx>(ci, ri, cj, rj, ck, rk);
         auto certain = [](const Approx& a) { return std::isfinite(a.m) && std::fabs(a.v) > 1e-11 * a.m; };
         int g_sign = certain(pa.g) ? (pa.g.v > 0 ? 1 : -1) : 0;
@@ -203,7 +271,7 @@ class SphereArranger {
           q_sign = sgn(pe.q);
         }
         if (g_sign > 0 && q_sign > 0) {
-          add_crossing(i, x, y, ends, out);
+          crossings.emplace_back(x, y);
           continue;
         }
         // Not crossing: a circle inside the other cap is covered (the lower index owns a
@@ -222,13 +290,21 @@ class SphereArranger {
           }, out.decisions);
           return same < 0 || caps[q].other < caps[p].other;
         };
-        if (inside(x, y)) caps[x].covered = true;
-        if (inside(y, x)) caps[y].covered = true;
+        const bool x_in_y = inside(x, y), y_in_x = inside(y, x);
+        if (x_in_y && y_in_x) {  // each circle in the other cap: together they cover the sphere
+          out.covered = true;
+          return;
+        }
+        caps[x].covered |= x_in_y;
+        caps[y].covered |= y_in_x;
       }
-    return ends;
+    // A cap whose circle lies in another cap lies in that cap (else the two would cover the
+    // sphere): it adds nothing. The crossings' points, between the caps that remain.
+    for (const auto& [x, y] : crossings)
+      if (!caps[x].covered && !caps[y].covered) add_crossing(i, x, y, ends, out);
   }
 
-  void add_crossing(std::uint32_t i, std::uint32_t x, std::uint32_t y, std::vector<std::vector<Endpoint>>& ends,
+  void add_crossing(std::uint32_t i, std::uint32_t x, std::uint32_t y, std::vector<Endpoint>& ends,
                     SphereResult& out) const {
     const Cap &cx = out.caps[x], &cy = out.caps[y];
     const double ri = r_[i];
@@ -249,15 +325,17 @@ class SphereArranger {
     for (int s : {-1, 1}) {
       const Vec3 p = y0 + (s * root) * wn;
       // On circle x, s = -1 enters cap y counter-clockwise; on circle y (w reversed) it leaves cap x.
-      ends[x].push_back({wrap(cx.frame.angle_of(p)), 1e-10 + position_error / (ri * cx.frame.s0), y, s, p});
-      ends[y].push_back({wrap(cy.frame.angle_of(p)), 1e-10 + position_error / (ri * cy.frame.s0), x, -s, p});
+      ends.push_back({x, pseudo_angle(dot(p, cx.frame.u), dot(p, cx.frame.v)),
+                      1e-10 + position_error / (ri * cx.frame.s0), y, s, p});
+      ends.push_back({y, pseudo_angle(dot(p, cy.frame.u), dot(p, cy.frame.v)),
+                      1e-10 + position_error / (ri * cy.frame.s0), x, -s, p});
     }
   }
 
   // Exact: is the vertex where circles j and k (cap indices) cross, on side s of
-  // D_j x D_k, inside ball l (open)?
-  bool vertex_inside(std::uint32_t i, const SphereResult& out, std::uint32_t j, std::uint32_t k, int s,
-                     std::uint32_t l, DecisionCounter& decisions) const {
+  // D_j x D_k, inside ball l (+1), on its sphere (0) or outside (-1)?
+  int vertex_inside(std::uint32_t i, const SphereResult& out, std::uint32_t j, std::uint32_t k, int s,
+                    std::uint32_t l, DecisionCounter& decisions) const {
     ++decisions.exact;
     const std::uint32_t aj = out.caps[j].other, ak = out.caps[k].other, al = out.caps[l].other;
     const auto p = arrangement::circle_pair<mpq_class>(c_[i], r_[i], c_[aj], r_[aj], c_[ak], r_[ak]);
@@ -265,11 +343,11 @@ class SphereArranger {
     const mpq_class el = arrangement::sphere_term(dl, r_[i], r_[al]);
     const mpq_class xq = p.g * (dot(dl, p.y0) - el * p.g);
     const mpq_class yq = mpq_class(s) * dot(dl, p.w);
-    return arrangement::sign_plus_root(xq, yq, p.q * p.g) > 0;
+    return arrangement::sign_plus_root(xq, yq, p.q * p.g);
   }
 
   // Step 3 for circle j (cap index).
-  void exposed_arcs(std::uint32_t i, std::uint32_t j, const std::vector<Endpoint>& ends, SphereResult& out) const {
+  void exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<const Endpoint> ends, SphereResult& out) const {
     const Cap& cap = out.caps[j];
     if (ends.empty()) {
       LocalArc arc;
@@ -285,41 +363,81 @@ class SphereArranger {
       double from, length, margin_from, margin_to;
       std::uint32_t cap;
     };
-    std::vector<Interval> intervals;
-    intervals.reserve(ends.size() / 2);
+    thread_local std::vector<Interval> intervals;
+    intervals.clear();
     for (std::size_t e = 0; e < ends.size(); e += 2) {
       const Endpoint& in = ends[e].s < 0 ? ends[e] : ends[e + 1];
       const Endpoint& ex = ends[e].s < 0 ? ends[e + 1] : ends[e];
       intervals.push_back({in.theta, wrap(ex.theta - in.theta), in.margin, ex.margin, in.cap});
+    }
+    // Whether the end `e` lies inside another interval: by angles where they are clearly
+    // apart, else by the exact test of the vertex against that ball.
+    auto covered_end = [&](std::size_t e) {
+      const Endpoint& p = ends[e];
+      for (const Interval& iv : intervals) {
+        if (iv.cap == p.cap) continue;
+        const double rel = wrap(p.theta - iv.from);
+        const double to_from = std::min(rel, kTurn - rel), to_end = std::fabs(rel - iv.length);
+        const double near = std::min(to_from - iv.margin_from, std::min(to_end, kTurn - to_end) - iv.margin_to);
+        if (near > p.margin) {
+          if (rel < iv.length) return true;
+          continue;
+        }
+        // s is relative to D_j x D_p.cap: the end of cap p.cap on circle j.
+        const int inside = vertex_inside(i, out, j, p.cap, p.s, iv.cap, out.decisions);
+        if (inside == 0) ++out.degenerate;  // on that sphere too: four spheres through a point
+        if (inside > 0) return true;
+      }
+      return false;
+    };
+    // A sweep counter-clockwise over the ends counts the intervals around each; an end next
+    // to another within their rounding, and every end of a circle with an interval whose
+    // ends are that close (nearly tangent circles), is decided one by one instead.
+    thread_local std::vector<std::uint32_t> order;
+    order.resize(ends.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return ends[a].theta != ends[b].theta ? ends[a].theta < ends[b].theta : a < b;
+    });
+    const std::size_t n_ends = ends.size();
+    bool careful = false;
+    int depth = 0;
+    for (const Interval& iv : intervals) {
+      careful |= std::min(iv.length, kTurn - iv.length) <= iv.margin_from + iv.margin_to;
+      depth += iv.from + iv.length >= kTurn;  // active at the sweep's start
+    }
+    const int start_depth = depth;
+    thread_local std::vector<char> exposed_end;
+    exposed_end.assign(n_ends, 0);
+    for (std::size_t k = 0; k < n_ends; ++k) {
+      const Endpoint& p = ends[order[k]];
+      if (p.s < 0) {
+        exposed_end[order[k]] = depth == 0;
+        ++depth;
+      } else {
+        --depth;
+        exposed_end[order[k]] = depth == 0;
+      }
+    }
+    for (std::size_t k = 0; k < n_ends; ++k) {
+      const Endpoint& p = ends[order[k]];
+      const Endpoint& before = ends[order[(k + n_ends - 1) % n_ends]];
+      const Endpoint& after = ends[order[(k + 1) % n_ends]];
+      auto close = [&](const Endpoint& q) {
+        const double d = wrap(q.theta - p.theta);
+        return std::min(d, kTurn - d) <= p.margin + q.margin;
+      };
+      if (careful || depth != start_depth || close(before) || close(after)) exposed_end[order[k]] = !covered_end(order[k]);
     }
     struct Exposed {
       double theta;
       int s;
       std::size_t end;
     };
-    std::vector<Exposed> exposed;
-    for (std::size_t e = 0; e < ends.size(); ++e) {
-      const Endpoint& p = ends[e];
-      bool covered = false;
-      for (const Interval& iv : intervals) {
-        if (iv.cap == p.cap) continue;
-        const double rel = wrap(p.theta - iv.from);
-        const double to_from = std::min(rel, kTwoPi - rel), to_end = std::fabs(rel - iv.length);
-        const double near = std::min(to_from - iv.margin_from, std::min(to_end, kTwoPi - to_end) - iv.margin_to);
-        if (near > p.margin) {
-          if (rel < iv.length) covered = true;
-        } else {
-          // s is relative to D_j x D_p.cap: the endpoint of cap p.cap on circle j.
-          covered = vertex_inside(i, out, j, p.cap, p.s, iv.cap, out.decisions);
-          if (!covered) {
-            // On the boundary of that ball? Then four spheres meet here (exposed: open balls).
-            ++out.degenerate;
-          }
-        }
-        if (covered) break;
-      }
-      if (!covered) exposed.push_back({p.theta, p.s, e});
-    }
+    thread_local std::vector<Exposed> exposed;
+    exposed.clear();
+    for (std::size_t e = 0; e < n_ends; ++e)
+      if (exposed_end[e]) exposed.push_back({ends[e].theta, ends[e].s, e});
     if (exposed.empty()) return;  // the whole circle is covered by the union of the crossing caps
     // Counter-clockwise, exposed arcs run from a leaving end (s = +1) to the next entering
     // one; at equal angles the leaving end first (the point alone is exposed).
@@ -345,11 +463,19 @@ class SphereArranger {
       const Endpoint &leave = ends[exposed[a].end], &enter = ends[exposed[b].end];
       LocalArc arc;
       arc.cap = j;
-      double delta = enter.theta - leave.theta;
-      if (b <= a) delta += kTwoPi;  // across the angle's origin
-      if (b == a) delta = kTwoPi;
-      arc.theta = enter.theta;
-      arc.delta = std::max(0.0, delta);
+      // True angles for the exposed ends only (the integrals need them).
+      const double from = cap.frame.angle_of(enter.y), to = cap.frame.angle_of(leave.y);
+      double delta = from - to;
+      if (b == a) {
+        delta = kTwoPi;
+      } else if (enter.theta == leave.theta) {
+        delta = 0;  // one exposed point
+      } else {
+        delta = delta < 0 ? delta + kTwoPi : delta;  // from `to` counter-clockwise to `from`
+        delta = delta >= kTwoPi ? delta - kTwoPi : delta;
+      }
+      arc.theta = from;
+      arc.delta = delta;
       arc.from = vertex_key(i, cap.other, out.caps[enter.cap].other, enter.s);
       arc.to = vertex_key(i, cap.other, out.caps[leave.cap].other, 1);
       arc.from_point = enter.y;
@@ -611,7 +737,7 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
     for (const LocalArc& arc : s.arcs) {
       ArrangementArc a;
       a.sphere = i;
-      a.other = s.caps[arc.cap].other;
+      a.other = arc.other;
       a.from = arc.whole ? -1 : vertex_index(arc.from);
       a.to = arc.whole ? -1 : vertex_index(arc.to);
       a.angle = arc.delta;

@@ -26,6 +26,7 @@ struct SurfaceCommand {
   bool no_header = false;         // MSMS rows only: numbers, no header, no atom names
   bool skip_check = false;
   bool skip_cleanup = false;
+  bool areas_only = false;        // the true spheres' areas and volumes, no mesh
   std::filesystem::path json, per_atom, per_residue;
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
   double max_memory_gb = 0;  // 0: the machine's memory
@@ -45,6 +46,7 @@ struct SurfaceCommand {
 
   void add_options(CLI::App& app);
   int run() const;
+  int run_areas_only() const;
 };
 
 struct CheckCommand {

@@ -1,3 +1,4 @@
+#include <omp.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -10,6 +11,7 @@
 
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
+#include "molsurf/compute_areas.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
@@ -126,6 +128,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
   per_residue_option = app.add_option("--per-residue", per_residue,
                                       "Write each residue's area (A^2) to this CSV file ('-': standard output)")
                            ->group(output_group);
+  app.add_flag("--areas-only", areas_only,
+               "Areas and volumes only, exact from the true spheres (per atom, residue, shell, in total):\n"
+               "no mesh is made and no surface file written; reports only where --json, --per-atom or\n"
+               "--per-residue ask (docs/accuracy.md)")
+      ->group(output_group);
   app.add_flag("--no-cleanup", skip_cleanup,
                "Skip the surface improvement (paper 2.5: collapse of slivers under 5 degrees)")
       ->group(output_group);
@@ -341,6 +348,19 @@ std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, c
   return made.report;
 }
 
+// The mesh cavities that follow no true cavity: voids of the facets inside the true union.
+std::vector<std::size_t> artefact_components(const SurfaceReport& report) {
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < report.components.size(); ++c) {
+    if (!report.components[c].cavity()) continue;
+    bool follows_a_cavity = false;
+    for (const ShellReport& s : report.exact->shells)
+      follows_a_cavity |= s.cavity && s.mesh_component == static_cast<std::int64_t>(c);
+    if (!follows_a_cavity) out.push_back(c);
+  }
+  return out;
+}
+
 void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
                    const std::filesystem::path& volume_mesh, std::span<const std::filesystem::path> written_files,
                    std::ostream& text) {
@@ -354,6 +374,7 @@ void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshRe
 }  // namespace
 
 int SurfaceCommand::run() const {
+  if (areas_only) return run_areas_only();
   const std::filesystem::path out = surface_output_path(*this);
   // Every output checked before any work: a wrong path costs nothing.
   const std::vector<OutputRequest> outputs = requested_outputs(*this, out);
@@ -408,17 +429,72 @@ int SurfaceCommand::run() const {
   report.spheres = spheres;
   report.output = out;
   report.outer_only = outer_only;
+  if (!computed.component_shells.empty() || !computed.exact.area_per_sphere.empty()) {
+    report.exact = make_exact_report(computed.exact, computed.component_shells, outer_only);
+    report.exact->seconds = computed.seconds.measures;
+    report.artefact_components = artefact_components(report);
+  }
+  // Per atom and residue: the true spheres' areas (those of the cavities too unless they are dropped).
+  const std::vector<double> atom_area =
+      report.exact ? exact_atom_area(computed.exact, outer_only) : measures.atom_area;
 
   // All or nothing: every file is complete before any replaces an old one.
   OutputFiles files;
   add_surface_files(*this, out, surface, written, check_options, inputs, outputs, files);
   const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);
-  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, measures.atom_area));
-  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, measures.atom_area));
+  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
+  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, atom_area));
   report.seconds.write = computed.seconds.measures + seconds_since(clock);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!quiet) print_summary(report, volume, volume_mesh, written_files, text);
+  return 0;
+}
+
+int SurfaceCommand::run_areas_only() const {
+  // No mesh: the options that shape or write one have nothing to act on.
+  const std::pair<const CLI::Option*, const char*> mesh_options[] = {{output_option, "-o"},
+                                                                    {volume_option, "--volume-mesh"}};
+  for (const auto& [option, name] : mesh_options)
+    if (option->count() > 0) throw Error(std::string("--areas-only writes no mesh: drop ") + name);
+  if (split_components) throw Error("--areas-only writes no mesh: drop --split-components");
+  std::vector<OutputRequest> outputs;
+  if (json_option->count() > 0) outputs.push_back({json, "--json"});
+  if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
+  if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
+  const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
+  check_output_paths(inputs, outputs);
+  bool report_to_stdout = false;
+  for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
+  std::ostream& text = report_to_stdout ? std::cerr : std::cout;
+
+  note_threads(*this);
+  SurfaceReport report;
+  const auto read_start = std::chrono::steady_clock::now();
+  const Structure s = read_structure(structure, read_options(*this));
+  report.seconds.read = seconds_since(read_start);
+  if (!quiet) text << format_read_report(s.report) << std::flush;
+  const ComputedAreas computed = compute_areas(s.atoms, spheres, threads);
+  report.input = s.report;
+  report.spheres = spheres;
+  report.areas_only = true;
+  report.outer_only = outer_only;
+  report.threads = threads > 0 ? threads : omp_get_max_threads();
+  report.exact = make_exact_report(computed.arrangement, {}, outer_only);
+  report.exact->seconds = computed.seconds;
+  const std::vector<double> atom_area = exact_atom_area(computed.arrangement, outer_only);
+
+  OutputFiles files;
+  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
+  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, atom_area));
+  if (!json.empty()) files.add_text(json, surface_report_json(report));
+  const std::vector<std::filesystem::path> written_files = files.commit();
+  if (!quiet) {
+    text << "\n" << format_surface_report(report);
+    std::string list;
+    for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
+    text << "written: " << (list.empty() ? "nothing (--areas-only)" : list) << "\n";
+  }
   return 0;
 }
 

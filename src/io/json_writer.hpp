@@ -28,6 +28,7 @@ class JsonWriter {
   JsonWriter& value(std::string_view s) { separate(); write_string(s); return *this; }
   JsonWriter& value(const char* s) { return value(std::string_view(s)); }
   JsonWriter& value(bool b) { separate(); out_ += b ? "true" : "false"; return *this; }
+  JsonWriter& null() { separate(); out_ += "null"; return *this; }
   JsonWriter& value(double d) {
     separate();
     if (!std::isfinite(d)) { out_ += "null"; return *this; }

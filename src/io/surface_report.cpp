@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <functional>
 #include <string>
 
 #include "io/atomic_file.hpp"
@@ -24,12 +25,71 @@ SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check) {
   return r;
 }
 
+ExactReport make_exact_report(const SphereArrangement& a, std::span<const std::int64_t> component_shells,
+                              bool outer_only) {
+  ExactReport r;
+  r.area = a.area;
+  r.volume = a.volume;
+  if (outer_only) {
+    r.area = r.volume = 0;
+    for (const ArrangementShell& s : a.shells)
+      if (!s.cavity()) {
+        r.area += s.area;
+        r.volume += s.volume;
+      }
+  }
+  r.vertices = a.vertices.size();
+  r.arcs = a.arcs.size();
+  r.buried_atoms = a.stats.buried;
+  r.exact_decisions = a.stats.exact_decisions;
+  r.degenerate_points = a.stats.degenerate_points;
+  for (const ArrangementShell& s : a.shells)
+    if (!(outer_only && s.cavity())) r.shells.push_back({s.cavity(), s.area, std::abs(s.volume), s.centroid, s.spheres, -1});
+  // Each shell's mesh component: the largest component that follows it.
+  for (std::size_t c = 0; c < component_shells.size(); ++c) {
+    const std::int64_t s = component_shells[c];
+    if (s >= 0 && static_cast<std::size_t>(s) < r.shells.size() && r.shells[s].mesh_component < 0)
+      r.shells[s].mesh_component = static_cast<std::int64_t>(c);
+  }
+  return r;
+}
+
 namespace {
 
 std::string fixed(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
+}
+
+// The true shells: the outer surfaces and the cavities, as the text report lists them.
+void format_shells(const SurfaceReport& r, const std::function<void(const std::string&, const std::string&)>& row) {
+  const ExactReport& e = *r.exact;
+  std::size_t cavities = 0;
+  for (const ShellReport& s : e.shells) cavities += s.cavity;
+  row("shells", std::to_string(e.shells.size() - cavities) + " outer, " + std::to_string(cavities) + " cavit" +
+                    (cavities == 1 ? "y" : "ies") + " (true spheres)");
+  std::size_t shown = 0;
+  for (const ShellReport& s : e.shells) {
+    if (shown == 8) {
+      row("", "... (" + std::to_string(e.shells.size() - shown) + " more; --json lists all)");
+      break;
+    }
+    std::string mesh;
+    if (!r.areas_only)
+      mesh = s.mesh_component >= 0
+                 ? ", " + std::to_string(r.components[s.mesh_component].faces) + " faces"
+                 : (s.cavity ? ", open in the mesh" : ", not in the mesh");
+    char centre[96] = "";
+    if (s.cavity) std::snprintf(centre, sizeof centre, " at (%.2f, %.2f, %.2f)", s.centroid.x, s.centroid.y, s.centroid.z);
+    row(shown == 0 ? "  by shell" : "",
+        std::string(s.cavity ? "cavity " : "outer  ") + "area " + fixed(s.area, 2) + " A^2, volume " +
+            fixed(s.volume, 2) + " A^3, " + std::to_string(s.atoms.size()) + " atoms" + centre + mesh);
+    ++shown;
+  }
+  if (!r.artefact_components.empty())
+    row("", std::to_string(r.artefact_components.size()) +
+                " mesh void(s) inside the true union (facet artefacts; not cavities)");
 }
 
 }  // namespace
@@ -39,13 +99,30 @@ std::string format_surface_report(const SurfaceReport& r) {
   auto row = [&](const std::string& label, const std::string& value) {
     out += "  " + label + std::string(label.size() < 22 ? 22 - label.size() : 1, ' ') + value + "\n";
   };
+  if (r.areas_only) {
+    const ExactReport& e = *r.exact;
+    row("area", fixed(e.area, 4) + " A^2 (true spheres, exact to rounding)");
+    row("volume", fixed(e.volume, 4) + " A^3 (inside the outer surface, minus cavities)");
+    format_shells(r, row);
+    row("arrangement", std::to_string(e.vertices) + " vertices, " + std::to_string(e.arcs) + " arcs, " +
+                           std::to_string(e.buried_atoms) + " buried atoms");
+    row("time", "read " + fixed(r.seconds.read, 2) + " s, areas " + fixed(e.seconds, 3) + " s (" +
+                    std::to_string(r.threads) + " thread" + (r.threads == 1 ? "" : "s") + ")");
+    return out;
+  }
   row("surface", r.output.string() + (r.outer_only ? " (outer surface only)" : ""));
   row("faces / vertices", std::to_string(r.faces) + " / " + std::to_string(r.vertices));
-  row("area", fixed(r.area, 2) + " A^2");
-  row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
+  if (r.exact) {
+    row("area", fixed(r.exact->area, 2) + " A^2 (true spheres; the facets: " + fixed(r.area, 2) + " A^2)");
+    row("volume", fixed(r.exact->volume, 2) + " A^3 (true spheres; the facets: " + fixed(r.volume, 2) + " A^3)");
+  } else {
+    row("area", fixed(r.area, 2) + " A^2");
+    row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
+  }
+  if (r.exact) format_shells(r, row);
   std::size_t cavities = 0;
   for (const auto& c : r.components) cavities += c.cavity();
-  row("components", std::to_string(r.components.size() - cavities) + " outer, " + std::to_string(cavities) +
+  row(r.exact ? "mesh components" : "components", std::to_string(r.components.size() - cavities) + " outer, " + std::to_string(cavities) +
                         " cavit" + (cavities == 1 ? "y" : "ies"));
   std::size_t shown = 0;
   for (const auto& c : r.components) {
@@ -93,13 +170,55 @@ std::string surface_report_json(const SurfaceReport& r) {
   j.end_object();
   j.field("probe", r.spheres.probe).field("density", r.spheres.density).field("frequency", r.spheres.frequency);
   j.field("area_corrected", r.spheres.area_corrected);
+  j.field("areas_only", r.areas_only);
+  if (r.exact) {
+    // area and volume: the true spheres'; facet_area and facet_volume: the mesh's.
+    const ExactReport& e = *r.exact;
+    j.field("area", e.area).field("volume", e.volume);
+    std::size_t cavities = 0;
+    for (const ShellReport& s : e.shells) cavities += s.cavity;
+    j.field("cavities", cavities);
+    j.key("shells").begin_array();
+    for (const ShellReport& s : e.shells) {
+      j.begin_object();
+      j.field("kind", s.cavity ? "cavity" : "outer").field("area", s.area).field("volume", s.volume);
+      j.key("centroid").begin_array().value(s.centroid.x).value(s.centroid.y).value(s.centroid.z).end_array();
+      j.key("atoms").begin_array();
+      for (std::uint32_t a : s.atoms) j.value(a);
+      j.end_array();
+      if (!r.areas_only) {
+        j.key("mesh_component");
+        if (s.mesh_component >= 0) j.value(s.mesh_component);
+        else j.null();
+      }
+      j.end_object();
+    }
+    j.end_array();
+    j.key("arrangement").begin_object();
+    j.field("vertices", e.vertices).field("arcs", e.arcs).field("buried_atoms", e.buried_atoms);
+    j.field("exact_decisions", e.exact_decisions).field("degenerate_points", e.degenerate_points);
+    j.field("seconds", e.seconds);
+    j.end_object();
+  }
+  if (r.areas_only) {
+    j.field("threads", r.threads);
+    j.key("seconds").begin_object().field("read", r.seconds.read).end_object();
+    j.end_object();
+    return j.str();
+  }
   j.field("output", r.output.string()).field("outer_only", r.outer_only);
-  j.field("faces", r.faces).field("vertices", r.vertices).field("area", r.area).field("volume", r.volume);
+  j.field("faces", r.faces).field("vertices", r.vertices);
+  if (!r.exact) j.field("area", r.area).field("volume", r.volume);
+  j.field("facet_area", r.area).field("facet_volume", r.volume);
   j.key("components").begin_array();
-  for (const auto& c : r.components) {
+  for (std::size_t k = 0; k < r.components.size(); ++k) {
+    const ComponentMeasure& c = r.components[k];
     j.begin_object();
     j.field("kind", c.cavity() ? "cavity" : "outer").field("faces", c.faces).field("area", c.area);
     j.field("volume", std::abs(c.volume));
+    if (r.exact)
+      j.field("artefact", std::find(r.artefact_components.begin(), r.artefact_components.end(), k) !=
+                              r.artefact_components.end());
     j.end_object();
   }
   j.end_array();

@@ -20,4 +20,12 @@ ComputedAreas compute_areas(std::span<const Atom> atoms, const SphereOptions& sp
   return out;
 }
 
+std::vector<double> exact_atom_area(const SphereArrangement& arrangement, bool outer_only) {
+  if (!outer_only) return arrangement.area_per_sphere;
+  std::vector<double> area(arrangement.area_per_sphere.size(), 0);
+  for (const ArrangementPatch& p : arrangement.patches)
+    if (!arrangement.shells[p.shell].cavity()) area[p.sphere] += p.area;
+  return area;
+}
+
 }  // namespace molsurf

@@ -1,5 +1,7 @@
 #include "molsurf/compute_surface.hpp"
 
+#include "molsurf/compute_areas.hpp"
+
 #include <omp.h>
 
 #include <chrono>
@@ -167,6 +169,10 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   const auto clock = std::chrono::steady_clock::now();
   pipeline.report(SurfaceStage::measures, 0, 1);
   result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size());
+  if (options.exact_areas) {
+    result.exact = compute_areas(atoms, options.spheres).arrangement;
+    result.component_shells = shells_of_components(attempt.mesh, result.exact);
+  }
   result.seconds.measures = seconds_since(clock);
   pipeline.report(SurfaceStage::measures, 1, 1);
 
