@@ -55,29 +55,40 @@ std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
 
 std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement) {
   const MeasuredComponents m = measured_components(mesh);
-  // The shell each atom lines, when it lines exactly one (-2: several).
   const std::size_t atoms = arrangement.area_per_sphere.size();
-  std::vector<std::int64_t> shell_of_atom(atoms, -1);
+  // The shells each atom lines (an atom may line the outer surface and a cavity).
+  std::vector<std::vector<std::uint32_t>> shells_of_atom(atoms);
   for (const ArrangementPatch& p : arrangement.patches) {
-    std::int64_t& s = shell_of_atom[p.sphere];
-    s = s == -1 || s == static_cast<std::int64_t>(p.shell) ? static_cast<std::int64_t>(p.shell) : -2;
+    std::vector<std::uint32_t>& list = shells_of_atom[p.sphere];
+    if (std::find(list.begin(), list.end(), p.shell) == list.end()) list.push_back(p.shell);
   }
-  std::vector<std::map<std::int64_t, double>> votes(m.parts.count);
+  // The atoms each component's faces come from.
+  std::vector<std::vector<std::uint32_t>> atoms_of(m.parts.count);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const std::int32_t t = mesh.tag(f);
-    if (t < 0 || static_cast<std::size_t>(t) >= atoms || shell_of_atom[t] < 0) continue;
-    votes[m.parts.face_component[f]][shell_of_atom[t]] += face_area(mesh, f);
+    if (t >= 0 && static_cast<std::size_t>(t) < atoms) atoms_of[m.parts.face_component[f]].push_back(t);
   }
+  // Each component follows the shell whose atoms are most like its own (Jaccard index).
   std::vector<std::int64_t> out;
   out.reserve(m.order.size());
+  std::map<std::uint32_t, std::size_t> shared;
   for (std::size_t c : m.order) {
+    std::vector<std::uint32_t>& own = atoms_of[c];
+    std::sort(own.begin(), own.end());
+    own.erase(std::unique(own.begin(), own.end()), own.end());
+    shared.clear();
+    for (std::uint32_t a : own)
+      for (std::uint32_t shell : shells_of_atom[a]) ++shared[shell];
     std::int64_t best = -1;
-    double weight = 0;
-    for (const auto& [shell, w] : votes[c])
-      if (w > weight) {
+    double score = 0;
+    for (const auto& [shell, common] : shared) {
+      const double jaccard =
+          double(common) / double(own.size() + arrangement.shells[shell].spheres.size() - common);
+      if (jaccard > score) {
+        score = jaccard;
         best = shell;
-        weight = w;
       }
+    }
     out.push_back(best);
   }
   return out;
