@@ -12,7 +12,8 @@
 //
 // Combinatorial decisions (which neighbours cut a sphere, which circles cross, whether a
 // point lies inside a ball) are exact: a floating-point filter, then rational arithmetic.
-// Tie rules: balls are open (a point on another sphere is exposed); a ball inside another
+// Tie rules: balls are open (a point on another sphere is exposed, and a point exposed alone,
+// with nothing exposed around it, is dropped); a ball inside another
 // (or tangent to it from inside) is buried; of identical spheres the lowest index counts;
 // tangent spheres do not cut each other; of two neighbours cutting the same circle, the
 // lower index owns it. The result does not depend on the thread count.
@@ -40,7 +41,9 @@ struct ArrangementVertex {
 struct ArrangementArc {
   std::uint32_t sphere = 0, other = 0;
   std::int64_t from = -1, to = -1;  // vertex indices; -1 for a whole circle
-  double angle = 0;                 // radians swept about the circle's axis (0, 2 pi]
+  // Radians swept about the circle's axis, in (0, 2 pi]; 0 only for an arc joining two
+  // vertices at one point where four or more spheres meet.
+  double angle = 0;
   std::uint32_t patch = 0;          // index into SphereArrangement::patches
 };
 

@@ -63,6 +63,9 @@ struct Cap {
   Vec3 d;           // c_other - c_i
   CircleFrame frame;
   bool covered = false;  // its circle lies in another cap (and so does the cap)
+  // The other spheres whose caps are this one exactly (one circle, one side): the circle's
+  // key names the two lowest of all spheres through it, alike on every sphere.
+  std::vector<std::uint32_t> twins;
 };
 
 struct Endpoint {
@@ -98,6 +101,7 @@ struct SphereResult {
   std::vector<LocalArc> arcs;
   std::vector<Cap> caps;  // released once the sphere is measured
   std::vector<LocalPatch> patches;
+  std::vector<std::pair<Key, Key>> aliases;  // two keys of one point (four or more spheres through it)
   DecisionCounter decisions;
 };
 
@@ -177,7 +181,7 @@ class SphereArranger {
       const Vec3 dd = cj - ci;
       const double d2 = dot(dd, dd), reach = (ri + rj) * (ri + rj);
       if (d2 > reach * (1 + 1e-12)) return;
-      if (d2 >= reach * (1 - 1e-12) && exact_sign([&]<class T>() {
+      if (d2 >= reach * (1 - 1e-12) && exact_sign([&]<class T>() -> T {
             const auto d = arrangement::difference<T>(cj, ci);
             return (T(ri) + T(rj)) * (T(ri) + T(rj)) - dot(d, d);
           }, out.decisions) <= 0)
@@ -186,7 +190,7 @@ class SphereArranger {
       // cuts nothing (a touching point at most).
       auto nested = [&](double big, double small) {
         if (big < small || d2 > (big - small) * (big - small) * (1 + 1e-12)) return false;
-        return exact_sign([&]<class T>() {
+        return exact_sign([&]<class T>() -> T {
                  const auto d = arrangement::difference<T>(cj, ci);
                  return (T(big) - T(small)) * (T(big) - T(small)) - dot(d, d);
                }, out.decisions) >= 0;
@@ -276,18 +280,20 @@ class SphereArranger {
         }
         // Not crossing: a circle inside the other cap is covered (the lower index owns a
         // circle that two caps share; complementary caps cover each other's circle).
+        bool identical = false;
         auto inside = [&](std::uint32_t p, std::uint32_t q) {  // circle p against cap q
           const Vec3 &cp = c_[caps[p].other], &cq = c_[caps[q].other];
           const double rp = r_[caps[p].other], rq = r_[caps[q].other];
-          const int centre = exact_sign([&]<class T>() {
+          const int centre = exact_sign([&]<class T>() -> T {
             const auto dp = arrangement::difference<T>(cp, ci), dq = arrangement::difference<T>(cq, ci);
             const T ep = arrangement::sphere_term(dp, ri, rp), eq = arrangement::sphere_term(dq, ri, rq);
             return ep * dot(dq, dp) - eq * dot(dp, dp);
           }, out.decisions);
           if (centre != 0) return centre > 0;
-          const int same = exact_sign([&]<class T>() {
+          const int same = exact_sign([&]<class T>() -> T {
             return dot(arrangement::difference<T>(cp, ci), arrangement::difference<T>(cq, ci));
           }, out.decisions);
+          identical = same > 0;
           return same < 0 || caps[q].other < caps[p].other;
         };
         const bool x_in_y = inside(x, y), y_in_x = inside(y, x);
@@ -297,6 +303,11 @@ class SphereArranger {
         }
         caps[x].covered |= x_in_y;
         caps[y].covered |= y_in_x;
+        if (identical) {
+          Cap &kept = caps[x_in_y ? y : x], &twin = caps[x_in_y ? x : y];
+          kept.twins.push_back(twin.other);
+          kept.twins.insert(kept.twins.end(), twin.twins.begin(), twin.twins.end());
+        }
       }
     // A cap whose circle lies in another cap lies in that cap (else the two would cover the
     // sphere): it adds nothing. The crossings' points, between the caps that remain.
@@ -361,15 +372,24 @@ class SphereArranger {
     // Each crossing cap's interval [entry, exit] counter-clockwise; ends come in pairs.
     struct Interval {
       double from, length, margin_from, margin_to;
-      std::uint32_t cap;
+      std::uint32_t cap, in_end, ex_end;
     };
     thread_local std::vector<Interval> intervals;
     intervals.clear();
     for (std::size_t e = 0; e < ends.size(); e += 2) {
-      const Endpoint& in = ends[e].s < 0 ? ends[e] : ends[e + 1];
-      const Endpoint& ex = ends[e].s < 0 ? ends[e + 1] : ends[e];
-      intervals.push_back({in.theta, wrap(ex.theta - in.theta), in.margin, ex.margin, in.cap});
+      const auto in_end = static_cast<std::uint32_t>(ends[e].s < 0 ? e : e + 1);
+      const auto ex_end = static_cast<std::uint32_t>(ends[e].s < 0 ? e + 1 : e);
+      const Endpoint &in = ends[in_end], &ex = ends[ex_end];
+      intervals.push_back({in.theta, wrap(ex.theta - in.theta), in.margin, ex.margin, in.cap, in_end, ex_end});
     }
+    // Ends found to be the same point (a vertex on a fourth sphere) get the same angle, so
+    // that the order below puts a leaving end before an entering one there: the exposed
+    // arc between them has length zero.
+    thread_local std::vector<double> theta;
+    thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> same_point;
+    theta.resize(ends.size());
+    for (std::size_t e = 0; e < ends.size(); ++e) theta[e] = ends[e].theta;
+    same_point.clear();
     // Whether the end `e` lies inside another interval: by angles where they are clearly
     // apart, else by the exact test of the vertex against that ball.
     auto covered_end = [&](std::size_t e) {
@@ -385,7 +405,12 @@ class SphereArranger {
         }
         // s is relative to D_j x D_p.cap: the end of cap p.cap on circle j.
         const int inside = vertex_inside(i, out, j, p.cap, p.s, iv.cap, out.decisions);
-        if (inside == 0) ++out.degenerate;  // on that sphere too: four spheres through a point
+        if (inside == 0) {  // on that sphere too: four spheres through a point
+          ++out.degenerate;
+          const double d_in = wrap(ends[iv.in_end].theta - p.theta), d_ex = wrap(ends[iv.ex_end].theta - p.theta);
+          const bool in_nearer = std::min(d_in, kTurn - d_in) <= std::min(d_ex, kTurn - d_ex);
+          same_point.emplace_back(static_cast<std::uint32_t>(e), in_nearer ? iv.in_end : iv.ex_end);
+        }
         if (inside > 0) return true;
       }
       return false;
@@ -429,6 +454,19 @@ class SphereArranger {
       };
       if (careful || depth != start_depth || close(before) || close(after)) exposed_end[order[k]] = !covered_end(order[k]);
     }
+    auto key_of = [&](std::uint32_t e) { return vertex_key(i, cap.other, out.caps[ends[e].cap].other, ends[e].s); };
+    thread_local std::vector<std::uint32_t> group;  // ends at one point, by union-find
+    group.resize(ends.size());
+    std::iota(group.begin(), group.end(), 0u);
+    auto root = [&](std::uint32_t e) {
+      while (group[e] != e) e = group[e] = group[group[e]];
+      return e;
+    };
+    for (const auto& [a, b] : same_point) {
+      group[std::max(root(a), root(b))] = std::min(root(a), root(b));
+      out.aliases.emplace_back(key_of(a), key_of(b));
+    }
+    for (std::size_t e = 0; e < ends.size(); ++e) theta[e] = ends[root(static_cast<std::uint32_t>(e))].theta;
     struct Exposed {
       double theta;
       int s;
@@ -437,13 +475,23 @@ class SphereArranger {
     thread_local std::vector<Exposed> exposed;
     exposed.clear();
     for (std::size_t e = 0; e < n_ends; ++e)
-      if (exposed_end[e]) exposed.push_back({ends[e].theta, ends[e].s, e});
+      if (exposed_end[e]) exposed.push_back({theta[e], ends[e].s, e});
     if (exposed.empty()) return;  // the whole circle is covered by the union of the crossing caps
     // Counter-clockwise, exposed arcs run from a leaving end (s = +1) to the next entering
     // one; at equal angles the leaving end first (the point alone is exposed).
     std::sort(exposed.begin(), exposed.end(), [](const Exposed& a, const Exposed& b) {
-      return a.theta != b.theta ? a.theta < b.theta : a.s > b.s;
+      if (a.theta != b.theta) return a.theta < b.theta;
+      return a.s != b.s ? a.s > b.s : a.end < b.end;
     });
+    // Ends of one kind at one point (several caps entered, or left, together) make one end.
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < exposed.size(); ++k) {
+      const bool twin = kept > 0 && exposed[kept - 1].theta == exposed[k].theta && exposed[kept - 1].s == exposed[k].s &&
+                        root(static_cast<std::uint32_t>(exposed[kept - 1].end)) ==
+                            root(static_cast<std::uint32_t>(exposed[k].end));
+      if (!twin) exposed[kept++] = exposed[k];
+    }
+    exposed.resize(kept);
     const std::size_t n = exposed.size();
     for (std::size_t a = 0; a < n; ++a) {
       if (exposed[a].s < 0) continue;
@@ -468,7 +516,7 @@ class SphereArranger {
       double delta = from - to;
       if (b == a) {
         delta = kTwoPi;
-      } else if (enter.theta == leave.theta) {
+      } else if (theta[exposed[b].end] == theta[exposed[a].end]) {
         delta = 0;  // one exposed point
       } else {
         delta = delta < 0 ? delta + kTwoPi : delta;  // from `to` counter-clockwise to `from`
@@ -497,24 +545,57 @@ class SphereArranger {
       out.vector_area += r2 * arrangement::half_moment(out.caps[arc.cap].frame, arc.theta, -arc.delta);
     out.area = r2 * single_pole_area(out);
 
-    // Cycles: each arc continues with the arc that starts where it ends.
+    // Cycles: each arc continues with the arc that starts where it ends (at a point with
+    // several keys, any of them).
+    auto canonical = [&](Key k) {
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (const auto& [x, y] : out.aliases)
+          if ((x == k && y < k) || (y == k && x < k)) {
+            k = std::min(x, y);
+            changed = true;
+          }
+      }
+      return k;
+    };
     const std::size_t m = out.arcs.size();
-    std::vector<std::int64_t> next(m, -1);
+    std::vector<Key> from(m), to(m);
     for (std::size_t a = 0; a < m; ++a) {
+      from[a] = out.aliases.empty() ? out.arcs[a].from : canonical(out.arcs[a].from);
+      to[a] = out.aliases.empty() ? out.arcs[a].to : canonical(out.arcs[a].to);
+    }
+    // A zero-length arc from a point back to itself (with aliases: a point where four or
+    // more spheres meet) links nothing: dropped.
+    if (!out.aliases.empty()) {
+      std::size_t kept = 0;
+      for (std::size_t a = 0; a < m; ++a)
+        if (out.arcs[a].whole || out.arcs[a].delta != 0 || from[a] != to[a]) {
+          out.arcs[kept] = out.arcs[a];
+          from[kept] = from[a];
+          to[kept++] = to[a];
+        }
+      out.arcs.resize(kept);
+      from.resize(kept);
+      to.resize(kept);
+      if (kept == 0) return;  // exposed at single points only
+    }
+    const std::size_t m_kept = out.arcs.size();
+    std::vector<std::int64_t> next(m_kept, -1);
+    for (std::size_t a = 0; a < m_kept; ++a) {
       if (out.arcs[a].whole) {
         next[a] = static_cast<std::int64_t>(a);
         continue;
       }
-      for (std::size_t b = 0; b < m; ++b)
-        if (!out.arcs[b].whole && out.arcs[b].from == out.arcs[a].to) {
+      for (std::size_t b = 0; b < m_kept; ++b)
+        if (!out.arcs[b].whole && from[b] == to[a]) {
           if (next[a] >= 0) out.broken = true;  // two arcs leave one vertex
           next[a] = static_cast<std::int64_t>(b);
         }
       if (next[a] < 0) out.broken = true;
     }
     std::vector<std::vector<std::uint32_t>> cycles;
-    std::vector<std::int64_t> cycle_of(m, -1);
-    for (std::size_t a = 0; a < m && !out.broken; ++a) {
+    std::vector<std::int64_t> cycle_of(m_kept, -1);
+    for (std::size_t a = 0; a < m_kept && !out.broken; ++a) {
       if (cycle_of[a] >= 0) continue;
       std::vector<std::uint32_t> cycle;
       std::size_t b = a;
@@ -526,6 +607,8 @@ class SphereArranger {
       if (b != a) out.broken = true;  // joined a cycle in its middle
       cycles.push_back(std::move(cycle));
     }
+    if (!out.broken) drop_point_cycles(cycles, out);
+    if (out.arcs.empty()) return;  // exposed at single points only
     if (out.broken || cycles.size() == 1) {
       // One patch (or, at a degenerate point the cycles do not close, the whole sphere's
       // exposed part taken as one patch).
@@ -537,6 +620,30 @@ class SphereArranger {
     }
     group_cycles(r2, cycles, out);
     add_keys(i, out);
+  }
+
+  // A cycle of arcs of length zero is a single exposed point (where four or more spheres
+  // meet and nothing around is exposed): it bounds no area and joins no shells.
+  static void drop_point_cycles(std::vector<std::vector<std::uint32_t>>& cycles, SphereResult& out) {
+    std::vector<char> keep(out.arcs.size(), 1);
+    bool any = false;
+    std::erase_if(cycles, [&](const std::vector<std::uint32_t>& cycle) {
+      for (std::uint32_t a : cycle)
+        if (out.arcs[a].delta != 0) return false;
+      for (std::uint32_t a : cycle) keep[a] = 0;
+      return any = true;
+    });
+    if (!any) return;
+    std::vector<std::uint32_t> index(out.arcs.size());
+    std::size_t kept = 0;
+    for (std::size_t a = 0; a < out.arcs.size(); ++a)
+      if (keep[a]) {
+        index[a] = static_cast<std::uint32_t>(kept);
+        out.arcs[kept++] = out.arcs[a];
+      }
+    out.arcs.resize(kept);
+    for (std::vector<std::uint32_t>& cycle : cycles)
+      for (std::uint32_t& a : cycle) a = index[a];
   }
 
   // The sphere's exposed area on the unit sphere, with one pole for all arcs: a pole whose
@@ -664,8 +771,11 @@ class SphereArranger {
     for (const LocalArc& arc : out.arcs) {
       std::vector<Key>& keys = out.patches[arc.patch].keys;
       if (arc.whole) {
-        const std::uint32_t j = out.caps[arc.cap].other;
-        keys.push_back({std::min(i, j), std::max(i, j), kWholeCircle, 0});
+        const Cap& cap = out.caps[arc.cap];
+        std::vector<std::uint32_t> through{i, cap.other};
+        through.insert(through.end(), cap.twins.begin(), cap.twins.end());
+        std::partial_sort(through.begin(), through.begin() + 2, through.end());
+        keys.push_back({through[0], through[1], kWholeCircle, 0});
       } else {
         keys.push_back(arc.from);
       }
@@ -697,13 +807,30 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
   result.stats.spheres = n;
   if (n == 0) return result;
   const double largest = *std::max_element(radii.begin(), radii.end());
-  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return radii[i] > 0; });
+  // Copies of a sphere (same centre and radius) count once, at the lowest index; the others
+  // are buried and cut nothing, so that a circle's spheres are alike on every sphere.
+  std::vector<std::uint32_t> by_value(n);
+  std::iota(by_value.begin(), by_value.end(), 0u);
+  auto value = [&](std::uint32_t i) { return std::tuple(centres[i].x, centres[i].y, centres[i].z, radii[i], i); };
+  std::sort(by_value.begin(), by_value.end(), [&](std::uint32_t a, std::uint32_t b) { return value(a) < value(b); });
+  std::vector<char> copy(n, 0);
+  for (std::size_t k = 1; k < n; ++k) {
+    const std::uint32_t a = by_value[k - 1], b = by_value[k];
+    copy[b] = centres[a] == centres[b] && radii[a] == radii[b];
+  }
+  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return radii[i] > 0 && !copy[i]; });
   const SphereArranger arranger(centres, radii, grid);
   std::vector<SphereResult> spheres(n);
   ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
-    errors.run(i, [&] { spheres[i] = arranger.arrange(static_cast<std::uint32_t>(i)); });
+    errors.run(i, [&] {
+      if (copy[i]) {
+        spheres[i].buried = spheres[i].duplicate = true;
+        return;
+      }
+      spheres[i] = arranger.arrange(static_cast<std::uint32_t>(i));
+    });
   errors.rethrow();
 
   // Vertices: every arc's ends, once each, in key order.
@@ -750,19 +877,36 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
       for (const Key& key : p.keys) patch_keys.emplace_back(key, index);
     }
   }
-  std::sort(patch_keys.begin(), patch_keys.end());
+  // Shells: patches joined through the keys on their boundaries, keys through their aliases
+  // (union-find over patches, then keys).
+  std::vector<Key> keys;
+  keys.reserve(patch_keys.size());
+  for (const auto& pk : patch_keys) keys.push_back(pk.first);
+  std::vector<std::pair<Key, Key>> aliases;
+  for (const SphereResult& s : spheres) aliases.insert(aliases.end(), s.aliases.begin(), s.aliases.end());
+  for (const auto& [x, y] : aliases) {
+    keys.push_back(x);
+    keys.push_back(y);
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   const std::size_t patches = result.patches.size();
-  std::vector<std::uint32_t> parent(patches);
+  auto key_node = [&](const Key& k) {
+    return static_cast<std::uint32_t>(patches + (std::lower_bound(keys.begin(), keys.end(), k) - keys.begin()));
+  };
+  std::vector<std::uint32_t> parent(patches + keys.size());
   std::iota(parent.begin(), parent.end(), 0u);
   auto find = [&](std::uint32_t v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
   };
-  for (std::size_t k = 1; k < patch_keys.size(); ++k)
-    if (patch_keys[k].first == patch_keys[k - 1].first) {
-      const std::uint32_t a = find(patch_keys[k].second), b = find(patch_keys[k - 1].second);
-      parent[std::max(a, b)] = std::min(a, b);
-    }
+  auto unite = [&](std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    parent[std::max(a, b)] = std::min(a, b);
+  };
+  for (const auto& [key, patch] : patch_keys) unite(patch, key_node(key));
+  for (const auto& [x, y] : aliases) unite(key_node(x), key_node(y));
 
   // Shell measures, each about its own first sphere's centre (the divergence theorem's
   // origin is free; a near one keeps the sum's cancellation small).
