@@ -26,7 +26,7 @@
 #include "arrangement/sphere_predicates.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "common/thread_count_scope.hpp"
-#include "geometry/point_grid.hpp"
+#include "arrangement/power_neighbours.hpp"
 
 namespace molsurf {
 
@@ -63,10 +63,10 @@ struct Cap {
   Vec3 d;           // c_other - c_i
   CircleFrame frame;
   bool covered = false;  // its circle lies in another cap (and so does the cap)
-  // The other spheres whose caps are this one exactly (one circle, one side): the circle's
-  // key names the two lowest of all spheres through it, alike on every sphere.
-  std::vector<std::uint32_t> twins;
 };
+
+// The whole circle where spheres i and j meet.
+Key circle_key(std::uint32_t i, std::uint32_t j) { return {std::min(i, j), std::max(i, j), kWholeCircle, 0}; }
 
 struct Endpoint {
   std::uint32_t circle = 0;  // the cap whose circle it lies on
@@ -123,8 +123,8 @@ double wrap(double a) {  // a in (-2 turns, 2 turns) into [0, 1 turn)
 
 class SphereArranger {
  public:
-  SphereArranger(std::span<const Vec3> c, std::span<const double> r, const geometry::PointGrid& grid)
-      : c_(c), r_(r), grid_(grid) {}
+  SphereArranger(std::span<const Vec3> c, std::span<const double> r, const arrangement::PowerNeighbours& neighbours)
+      : c_(c), r_(r), neighbours_(neighbours) {}
 
   SphereResult arrange(std::uint32_t i) const {
     SphereResult out;
@@ -135,7 +135,7 @@ class SphereArranger {
     raw.clear();
     cross_circles(i, raw, out);
     if (out.covered) {
-      out.caps.clear();
+      out.caps = {};
       return out;
     }
     // The ends grouped by circle, in the order they were found (a crossing's two ends
@@ -161,14 +161,13 @@ class SphereArranger {
   bool find_caps(std::uint32_t i, SphereResult& out) const {
     const Vec3& ci = c_[i];
     const double ri = r_[i];
-    if (ri == 0) {
+    if (ri == 0 || neighbours_.hidden[i]) {
       out.buried = true;
       return false;
     }
     bool buried = false;
-    grid_.for_each_near(ci, [&](std::size_t jj) {
-      const auto j = static_cast<std::uint32_t>(jj);
-      if (buried || j == i) return;
+    for (std::uint32_t n = neighbours_.offset[i]; n < neighbours_.offset[i + 1] && !buried; ++n) [&] {
+      const std::uint32_t j = neighbours_.list[n];
       const Vec3& cj = c_[j];
       const double rj = r_[j];
       if (rj == 0) return;
@@ -208,14 +207,13 @@ class SphereArranger {
       const double c0 = std::clamp(a / ri, -1.0, 1.0);
       cap.frame = arrangement::circle_frame(cap.d / dn, c0, std::sqrt(std::max(0.0, (1 - c0) * (1 + c0))));
       out.caps.push_back(cap);
-    });
+    }();
     if (buried) {
       out.buried = true;
-      out.caps.clear();
+      out.caps = {};
       return false;
     }
-    // The grid visits cells in a fixed order; sort so that the result depends on the input only.
-    std::sort(out.caps.begin(), out.caps.end(), [](const Cap& x, const Cap& y) { return x.other < y.other; });
+    // The neighbours are sorted: the caps are in the order of their spheres.
     out.circles = out.caps.size();
     return true;
   }
@@ -280,7 +278,7 @@ class SphereArranger {
         }
         // Not crossing: a circle inside the other cap is covered (the lower index owns a
         // circle that two caps share; complementary caps cover each other's circle).
-        bool identical = false;
+        bool same_circle = false;
         auto inside = [&](std::uint32_t p, std::uint32_t q) {  // circle p against cap q
           const Vec3 &cp = c_[caps[p].other], &cq = c_[caps[q].other];
           const double rp = r_[caps[p].other], rq = r_[caps[q].other];
@@ -293,21 +291,18 @@ class SphereArranger {
           const int same = exact_sign([&]<class T>() -> T {
             return dot(arrangement::difference<T>(cp, ci), arrangement::difference<T>(cq, ci));
           }, out.decisions);
-          identical = same > 0;
+          same_circle = true;
           return same < 0 || caps[q].other < caps[p].other;
         };
         const bool x_in_y = inside(x, y), y_in_x = inside(y, x);
+        // One circle cut by two spheres (its two names are aliases, for the shells).
+        if (same_circle) out.aliases.emplace_back(circle_key(i, j), circle_key(i, k));
         if (x_in_y && y_in_x) {  // each circle in the other cap: together they cover the sphere
           out.covered = true;
           return;
         }
         caps[x].covered |= x_in_y;
         caps[y].covered |= y_in_x;
-        if (identical) {
-          Cap &kept = caps[x_in_y ? y : x], &twin = caps[x_in_y ? x : y];
-          kept.twins.push_back(twin.other);
-          kept.twins.insert(kept.twins.end(), twin.twins.begin(), twin.twins.end());
-        }
       }
     // A cap whose circle lies in another cap lies in that cap (else the two would cover the
     // sphere): it adds nothing. The crossings' points, between the caps that remain.
@@ -771,11 +766,7 @@ class SphereArranger {
     for (const LocalArc& arc : out.arcs) {
       std::vector<Key>& keys = out.patches[arc.patch].keys;
       if (arc.whole) {
-        const Cap& cap = out.caps[arc.cap];
-        std::vector<std::uint32_t> through{i, cap.other};
-        through.insert(through.end(), cap.twins.begin(), cap.twins.end());
-        std::partial_sort(through.begin(), through.begin() + 2, through.end());
-        keys.push_back({through[0], through[1], kWholeCircle, 0});
+        keys.push_back(circle_key(i, out.caps[arc.cap].other));
       } else {
         keys.push_back(arc.from);
       }
@@ -784,7 +775,7 @@ class SphereArranger {
 
   std::span<const Vec3> c_;
   std::span<const double> r_;
-  const geometry::PointGrid& grid_;
+  const arrangement::PowerNeighbours& neighbours_;
 };
 
 }  // namespace
@@ -806,7 +797,6 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
   result.area_per_sphere.assign(n, 0);
   result.stats.spheres = n;
   if (n == 0) return result;
-  const double largest = *std::max_element(radii.begin(), radii.end());
   // Copies of a sphere (same centre and radius) count once, at the lowest index; the others
   // are buried and cut nothing, so that a circle's spheres are alike on every sphere.
   std::vector<std::uint32_t> by_value(n);
@@ -818,8 +808,10 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
     const std::uint32_t a = by_value[k - 1], b = by_value[k];
     copy[b] = centres[a] == centres[b] && radii[a] == radii[b];
   }
-  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return radii[i] > 0 && !copy[i]; });
-  const SphereArranger arranger(centres, radii, grid);
+  std::vector<char> include(n);
+  for (std::size_t i = 0; i < n; ++i) include[i] = radii[i] > 0 && !copy[i];
+  const arrangement::PowerNeighbours neighbours = arrangement::power_neighbours(centres, radii, include);
+  const SphereArranger arranger(centres, radii, neighbours);
   std::vector<SphereResult> spheres(n);
   ParallelExceptions errors;
 #pragma omp parallel for schedule(dynamic, 16)
