@@ -18,6 +18,7 @@
 // tangent spheres do not cut each other; of two neighbours cutting the same circle, the
 // lower index owns it. The result does not depend on the thread count.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -62,7 +63,7 @@ struct ArrangementShell {
   double volume = 0;   // signed: negative for a cavity
   Vec3 centroid;       // of the shell's surface (area-weighted)
   std::vector<std::uint32_t> spheres;  // the spheres with a patch on it (a cavity's lining atoms), sorted
-  bool cavity() const { return volume < 0; }
+  bool cavity() const { return std::signbit(volume); }  // -0 for a void too small to measure
 };
 
 struct ArrangementStats {

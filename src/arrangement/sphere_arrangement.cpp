@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
@@ -905,12 +906,16 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
   std::vector<std::int64_t> shell_of(patches, -1);
   std::vector<Vec3> origin;
   std::vector<ArrangementShell> shells;
+  // A bound on each shell volume's rounding: a patch's area and vector area come from
+  // integrals of order r^2 on the unit sphere, each some 1e-15 r^2 off, summed over its arcs.
+  std::vector<double> volume_error;
   for (std::uint32_t p = 0; p < patches; ++p) {
     const std::uint32_t root = find(p);
     if (shell_of[root] < 0) {
       shell_of[root] = static_cast<std::int64_t>(shells.size());
       shells.emplace_back();
       origin.push_back(centres[result.patches[p].sphere]);
+      volume_error.push_back(0);
     }
     const auto s = static_cast<std::size_t>(shell_of[root]);
     ArrangementPatch& patch = result.patches[p];
@@ -919,11 +924,29 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
     shell.area += patch.area;
     shell.volume += (radii[i] * patch.area + dot(centres[i] - origin[s], patch.vector_area)) / 3;
     shell.centroid += (centres[i] - origin[s]) * patch.area + radii[i] * patch.vector_area;
+    volume_error[s] += 1e-12 * radii[i] * radii[i] * (radii[i] + norm(centres[i] - origin[s]));
     if (shell.spheres.empty() || shell.spheres.back() != i) shell.spheres.push_back(i);
     patch.shell = static_cast<std::uint32_t>(s);
   }
-  for (std::size_t s = 0; s < shells.size(); ++s)
-    shells[s].centroid = shells[s].area > 0 ? origin[s] + shells[s].centroid / shells[s].area : origin[s];
+  for (std::size_t s = 0; s < shells.size(); ++s) {
+    ArrangementShell& shell = shells[s];
+    shell.centroid = shell.area > 0 ? origin[s] + shell.centroid / shell.area : origin[s];
+    if (std::fabs(shell.volume) > volume_error[s]) continue;
+    // A shell too small for its volume's sign (a void of 1e-13 A^3 where four spheres nearly
+    // meet). An outer shell holds whole balls, so its area is at least that of its smallest
+    // sphere (a surface around a ball is no smaller than the ball's sphere): a shell with
+    // less is a cavity. Otherwise (not seen) its centroid decides: outside its balls, a void.
+    double smallest = std::numeric_limits<double>::infinity();
+    bool inside = false;
+    for (std::uint32_t i : shell.spheres) {
+      smallest = std::min(smallest, radii[i]);
+      const Vec3 d = shell.centroid - centres[i];
+      inside |= dot(d, d) < radii[i] * radii[i];
+    }
+    if (shell.area < 4 * kPi * smallest * smallest) inside = false;
+    shell.volume = inside ? std::fabs(shell.volume) : -std::fabs(shell.volume);
+    if (shell.volume == 0) shell.volume = inside ? 0.0 : -0.0;
+  }
   // The largest outer shell first, then by area.
   std::vector<std::size_t> order(shells.size());
   std::iota(order.begin(), order.end(), 0);
