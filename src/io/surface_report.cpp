@@ -1,6 +1,7 @@
 #include "molsurf/surface_report.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <stdexcept>
 #include <functional>
@@ -60,6 +61,14 @@ std::string fixed(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
+}
+
+// A double as the shortest text that reads back to the same double: the areas are exact
+// to rounding, and a reader gets all of it.
+std::string exact_number(double v) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, end);
 }
 
 // The true shells: the outer surfaces and the cavities, as the text report lists them.
@@ -250,9 +259,9 @@ std::string per_atom_csv(std::span<const Atom> atoms, std::span<const double> ar
   char line[256];
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom& a = atoms[i];
-    std::snprintf(line, sizeof line, "%zu,%d,%s,%s,%d,%c,%s,%s,%.3f,%.4f\n", i, a.serial, a.chain.c_str(),
+    std::snprintf(line, sizeof line, "%zu,%d,%s,%s,%d,%c,%s,%s,%.3f,%s\n", i, a.serial, a.chain.c_str(),
                   a.residue_name.c_str(), a.residue_number, a.insertion_code == ' ' ? '_' : a.insertion_code,
-                  a.atom_name.c_str(), a.element.c_str(), a.radius, area[i]);
+                  a.atom_name.c_str(), a.element.c_str(), a.radius, exact_number(area[i]).c_str());
     csv += line;
   }
   return csv;
@@ -266,8 +275,8 @@ std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double>
   std::string csv = "chain,residue_name,residue_number,insertion_code,atoms,area\n";
   char line[256];
   for (const ResidueArea& r : area_per_residue(atoms, area)) {
-    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%.4f\n", r.chain.c_str(), r.residue_name.c_str(),
-                  r.residue_number, r.insertion_code == ' ' ? '_' : r.insertion_code, r.atoms, r.area);
+    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%s\n", r.chain.c_str(), r.residue_name.c_str(),
+                  r.residue_number, r.insertion_code == ' ' ? '_' : r.insertion_code, r.atoms, exact_number(r.area).c_str());
     csv += line;
   }
   return csv;

@@ -1,0 +1,116 @@
+// The command line's exact areas: --areas-only (no mesh, nothing written unless asked) and
+// the true spheres' numbers in the mesh's report.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+namespace molsurf {
+namespace {
+
+using testing::read_text;
+using testing::run_molsurf;
+using testing::TempDir;
+
+const std::string kData = MOLSURF_DATA_DIR;
+
+// The number after "key": in a JSON text (the first occurrence).
+double json_number(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\": (-?[0-9.eE+-]+)");
+  std::smatch m;
+  if (!std::regex_search(json, m, pattern)) throw std::runtime_error("no " + key + " in the JSON");
+  return std::stod(m[1]);
+}
+
+// The last column of each data row of a CSV file.
+std::vector<double> last_column(const std::string& csv) {
+  std::vector<double> values;
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // header
+  while (std::getline(lines, line)) values.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+  return values;
+}
+
+TEST(CliAreas, AreasOnlyWritesNoMeshAndReportsWhatItWasAskedFor) {
+  TempDir dir;
+  const auto r = run_molsurf("--areas-only --json r.json --per-atom a.csv '" + kData + "/pdb/1crn.pdb'", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+    files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"a.csv", "r.json"}));  // no 1crn.vtp
+  EXPECT_NE(r.out.find("true spheres"), std::string::npos) << r.out;
+  const std::string json = read_text(dir.path() / "r.json");
+  EXPECT_NE(json.find("\"areas_only\": true"), std::string::npos);
+  const double area = json_number(json, "area");
+  // Exact union of balls (docs/accuracy.md: 3001.47 A^2 by 4000 slices per ball).
+  EXPECT_NEAR(area, 3001.47, 0.01);
+  // The CSV prints each atom's area to the last bit: its sum is the total to rounding.
+  double sum = 0;
+  for (double a : last_column(read_text(dir.path() / "a.csv"))) sum += a;
+  EXPECT_NEAR(sum, area, 1e-10 * area);
+}
+
+TEST(CliAreas, MeshReportGivesTheTrueSpheresAndTheFacets) {
+  TempDir dir;
+  const auto mesh = run_molsurf("-q --json mesh.json -o s.vtp '" + kData + "/pdb/1crn.pdb'", dir.path());
+  const auto only = run_molsurf("-q --areas-only --json only.json '" + kData + "/pdb/1crn.pdb'", dir.path());
+  ASSERT_EQ(mesh.exit_code, 0) << mesh.err;
+  ASSERT_EQ(only.exit_code, 0) << only.err;
+  const std::string m = read_text(dir.path() / "mesh.json"), o = read_text(dir.path() / "only.json");
+  // The same arrangement: the same numbers to the last bit.
+  EXPECT_EQ(json_number(m, "area"), json_number(o, "area"));
+  EXPECT_EQ(json_number(m, "volume"), json_number(o, "volume"));
+  // The facets' own area is there too, within the faceting's half a percent.
+  const double facets = json_number(m, "facet_area"), exact = json_number(m, "area");
+  EXPECT_NE(facets, exact);
+  EXPECT_NEAR(facets, exact, 0.005 * exact);
+}
+
+TEST(CliAreas, AreasOnlyRefusesMeshOptionsBeforeAnyWork) {
+  TempDir dir;
+  for (const std::string& option : {"-o s.vtp", "--split-components", "--volume-mesh v.msh"}) {
+    const auto r = run_molsurf("--areas-only " + option + " '" + kData + "/pdb/1crn.pdb'", dir.path());
+    EXPECT_EQ(r.exit_code, 1) << option;
+    EXPECT_NE(r.err.find("--areas-only"), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << option;
+  }
+}
+
+TEST(CliAreas, CavityWithCentroidAndLiningAtoms) {
+  TempDir dir;
+  {
+    // Six spheres on the axes around an empty centre (test_sphere_arrangement_reference.cpp).
+    std::ofstream xyzr(dir.path() / "six.xyzr");
+    for (const char* line : {"2 0 0 1.75", "-2 0 0 1.75", "0 2 0 1.75", "0 -2 0 1.75", "0 0 2 1.75", "0 0 -2 1.75"})
+      xyzr << line << "\n";
+  }
+  const auto r = run_molsurf("--areas-only --probe 0 --json r.json six.xyzr", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = read_text(dir.path() / "r.json");
+  EXPECT_EQ(json_number(json, "cavities"), 1);
+  const std::size_t cavity = json.find("\"kind\": \"cavity\"");
+  ASSERT_NE(cavity, std::string::npos) << json;
+  const std::string rest = json.substr(cavity);
+  EXPECT_NEAR(json_number(rest, "area"), 1.911806, 1e-5);  // closed form (reference test)
+  EXPECT_NEAR(json_number(rest, "volume"), 0.147862, 1e-5);
+  const std::size_t atoms = rest.find("\"atoms\": [");
+  ASSERT_NE(atoms, std::string::npos) << rest;
+  std::string list = rest.substr(atoms + 10, rest.find(']', atoms) - atoms - 10);
+  std::erase_if(list, [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+  EXPECT_EQ(list, "0,1,2,3,4,5");
+}
+
+}  // namespace
+}  // namespace molsurf
