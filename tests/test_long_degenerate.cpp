@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "arrangement_invariants.hpp"
 #include "boolean_invariants.hpp"
 #include "degenerate_placements.hpp"
 #include "molsurf/boolean.hpp"
@@ -33,6 +34,16 @@ TEST_P(ManyDegeneratePlacements, BothMethodsValidAndEqual) {
         EXPECT_EQ(std::string(e.what()).find("internal"), std::string::npos) << what << ": " << e.what();
       }
     }
+}
+
+// The true spheres' arrangement on the same placements (its tie rules: open balls, the
+// lowest copy, circles shared by several spheres).
+TEST_P(ManyDegeneratePlacements, ArrangementIsSound) {
+  const std::uint32_t seed = std::get<1>(GetParam());
+  const testing::DegeneratePlacement p = testing::degenerate_placement(std::get<0>(GetParam()), seed);
+  for (const double probe : {0.0, 0.7, 1.4})
+    testing::expect_arrangement_sound(p.atoms, probe,
+                                      "seed " + std::to_string(seed) + " (" + p.family + "), probe " + std::to_string(probe));
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, ManyDegeneratePlacements,

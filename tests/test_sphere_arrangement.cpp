@@ -7,6 +7,8 @@
 #include <random>
 #include <set>
 
+#include "arrangement_invariants.hpp"
+#include "degenerate_placements.hpp"
 #include "molsurf/ball_union.hpp"
 #include "molsurf/sphere_arrangement.hpp"
 
@@ -119,6 +121,17 @@ TEST(SphereArrangement, SameBitsOnAnyThreadCount) {
   EXPECT_EQ(one.area_per_sphere, two.area_per_sphere);
   EXPECT_EQ(one.vertices.size(), two.vertices.size());
   EXPECT_EQ(one.shells.size(), two.shells.size());
+}
+
+// A few seeds of each degenerate family here; the long battery runs a hundred each.
+TEST(SphereArrangement, DegeneratePlacementsAreSound) {
+  for (const testing::PlacementFamily family : testing::kAllPlacementFamilies)
+    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+      const testing::DegeneratePlacement p = testing::degenerate_placement(family, seed);
+      for (const double probe : {0.0, 1.4})
+        testing::expect_arrangement_sound(p.atoms, probe,
+                                          p.family + " seed " + std::to_string(seed) + ", probe " + std::to_string(probe));
+    }
 }
 
 TEST(SphereArrangement, RefusesBadSpheres) {

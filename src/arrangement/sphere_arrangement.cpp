@@ -719,12 +719,29 @@ class SphereArranger {
     for (std::size_t a = 0; a < n; ++a) side_area[a] = cycle_area(out, cycles[a]);
     // in[a][b]: a point of cycle b lies on cycle a's exposed side.
     std::vector<char> in(n * n, 1);
-    for (std::size_t b = 0; b < n; ++b) {
-      const LocalArc& arc = out.arcs[cycles[b][0]];
-      const Vec3 x = out.caps[arc.cap].frame.point(arc.theta - arc.delta / 2);
-      for (std::size_t a = 0; a < n; ++a)
-        if (a != b) in[a * n + b] = side_area[a] - cycle_integral(out, cycles[a], -x) > 2 * kPi;
-    }
+    for (std::size_t b = 0; b < n; ++b)
+      for (std::size_t a = 0; a < n; ++a) {
+        if (a == b) continue;
+        // A point of cycle b as far from cycle a's circles as a few tries find (a point
+        // where two circles touch would make the integral singular).
+        Vec3 x;
+        double best = -1;
+        for (std::size_t k = 0; k < std::min<std::size_t>(cycles[b].size(), 4); ++k)
+          for (const double f : {0.5, 0.25, 0.75}) {
+            const LocalArc& arc = out.arcs[cycles[b][k]];
+            const Vec3 candidate = out.caps[arc.cap].frame.point(arc.theta - f * arc.delta);
+            double clearance = 2;
+            for (std::uint32_t e : cycles[a]) {
+              const CircleFrame& circle = out.caps[out.arcs[e].cap].frame;
+              clearance = std::min(clearance, std::fabs(dot(circle.n, candidate) - circle.c0));
+            }
+            if (clearance > best) {
+              best = clearance;
+              x = candidate;
+            }
+          }
+        in[a * n + b] = side_area[a] - cycle_integral(out, cycles[a], -x) > 2 * kPi;
+      }
     std::vector<std::size_t> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](std::size_t v) {
