@@ -24,6 +24,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/sphere_arrangement.hpp"
+#include "molsurf/true_points.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
 
@@ -46,6 +47,9 @@ struct ComputeSurfaceOptions {
   // Also the exact arrangement of the true spheres (compute_areas.hpp): exact areas and
   // volumes per atom, shell and in total, beside the facets' own.
   bool exact_areas = true;
+  // After cleanup, move the vertices onto the true spheres, circles and triple points where
+  // validity allows (true_points.hpp).
+  bool true_points = false;
   // Refuse, before any sphere is built, spheres with more faces than this in all
   // (check_sphere_resources); `source` names the input in that message.
   std::uint64_t max_sphere_faces = kDefaultMaxSphereFaces;
@@ -90,6 +94,7 @@ struct ComputedSurface {
   std::vector<std::string> notes;
   MeshCheck check;                       // of `mesh`: valid
   std::optional<CleanupStats> cleanup;   // absent when cleanup is off
+  std::optional<TruePointStats> true_points;  // with ComputeSurfaceOptions::true_points
   Quality quality_before;                // of the union, before cleanup
   Quality quality_after;                 // of `mesh` (equal to quality_before without cleanup)
   SurfaceMeasures measures;  // the facets'

@@ -17,6 +17,7 @@
 #include "molsurf/surface.hpp"
 #include "molsurf/sphere_arrangement.hpp"
 #include "molsurf/surface_measures.hpp"
+#include "molsurf/true_points.hpp"
 
 namespace molsurf {
 
@@ -56,6 +57,7 @@ struct SurfaceReport {
   std::vector<ComponentMeasure> components;
   Quality quality;
   std::optional<CleanupStats> cleanup;  // absent with --no-cleanup
+  std::optional<TruePointStats> true_points;  // with --true-points
   bool valid = false;  // `check_mesh` on the surface written
   std::vector<std::string> defects;
   StageTimes seconds;

@@ -27,6 +27,7 @@ struct SurfaceCommand {
   bool skip_check = false;
   bool skip_cleanup = false;
   bool areas_only = false;        // the true spheres' areas and volumes, no mesh
+  bool true_points = false;       // vertices moved onto the true surface after cleanup
   std::filesystem::path json, per_atom, per_residue;
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
   double max_memory_gb = 0;  // 0: the machine's memory

@@ -133,6 +133,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
                "no mesh is made and no surface file written; reports only where --json, --per-atom or\n"
                "--per-residue ask (docs/accuracy.md)")
       ->group(output_group);
+  app.add_flag("--true-points", true_points,
+               "After cleanup, move every vertex onto the true surface (its sphere, the circle of its two\n"
+               "atoms, their triple point) where the mesh stays valid; the facets then inscribe the true\n"
+               "surface (docs/accuracy.md)")
+      ->group(output_group);
   app.add_flag("--no-cleanup", skip_cleanup,
                "Skip the surface improvement (paper 2.5: collapse of slivers under 5 degrees)")
       ->group(output_group);
@@ -261,6 +266,7 @@ ComputeSurfaceOptions surface_compute_options(const SurfaceCommand& command) {
   options.outer_only = command.outer_only;
   options.cleanup = !command.skip_cleanup;
   options.check_self_intersections = !command.skip_check;
+  options.true_points = command.true_points;
   options.max_sphere_faces = command.max_faces;
   if (command.max_memory_gb > 0) options.max_memory = static_cast<std::uint64_t>(command.max_memory_gb * 1e9);
   options.source = command.structure;
@@ -309,6 +315,7 @@ void describe_written_surface(const SurfaceMeasures& measures, const ComputedSur
   report.components = measures.components;
   report.quality = measures.quality;
   report.cleanup = computed.cleanup;
+  report.true_points = computed.true_points;
   report.valid = written.check.valid();
   report.defects = written.check.defects();
   report.threads = computed.threads;
@@ -458,6 +465,7 @@ int SurfaceCommand::run_areas_only() const {
   for (const auto& [option, name] : mesh_options)
     if (option->count() > 0) throw Error(std::string("--areas-only writes no mesh: drop ") + name);
   if (split_components) throw Error("--areas-only writes no mesh: drop --split-components");
+  if (true_points) throw Error("--areas-only writes no mesh: drop --true-points");
   std::vector<OutputRequest> outputs;
   if (json_option->count() > 0) outputs.push_back({json, "--json"});
   if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});

@@ -154,6 +154,14 @@ std::string format_surface_report(const SurfaceReport& r) {
                               std::to_string(c.before.below_5deg) + ", < 1 deg: " + std::to_string(c.before.below_1deg) +
                               " of " + std::to_string(c.before.faces));
   }
+  if (r.true_points) {
+    const TruePointStats& t = *r.true_points;
+    char left[64];
+    std::snprintf(left, sizeof left, "%.2g", t.max_distance_left);
+    row("true points", std::to_string(t.on_true_point) + " of " + std::to_string(t.vertices) +
+                           " vertices on the true surface, " + std::to_string(t.partly) + " halfway, " +
+                           std::to_string(t.not_moved) + " not moved (largest distance left " + left + " A)");
+  }
   row(r.cleanup ? "quality after" : "quality",
       "min angle " + fixed(r.quality.min_angle_deg, 3) + " deg; faces < 5 deg: " + std::to_string(r.quality.below_5deg) +
           ", < 1 deg: " + std::to_string(r.quality.below_1deg) + " of " + std::to_string(r.quality.faces));
@@ -241,6 +249,13 @@ std::string surface_report_json(const SurfaceReport& r) {
     j.field("collapses", c.collapses).field("flips", c.flips).field("moves", c.moves).field("area_before", c.area_before);
     j.field("area_after", c.area_after).field("min_angle_deg_before", c.before.min_angle_deg);
     j.field("faces_below_5deg_before", c.before.below_5deg).field("faces_below_1deg_before", c.before.below_1deg);
+    j.end_object();
+  }
+  if (r.true_points) {
+    const TruePointStats& t = *r.true_points;
+    j.key("true_points").begin_object();
+    j.field("vertices", t.vertices).field("on_true_point", t.on_true_point).field("halfway", t.partly);
+    j.field("not_moved", t.not_moved).field("max_distance_left", t.max_distance_left).field("seconds", t.seconds);
     j.end_object();
   }
   j.field("valid", r.valid);

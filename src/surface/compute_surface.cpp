@@ -1,6 +1,7 @@
 #include "molsurf/compute_surface.hpp"
 
 #include "molsurf/compute_areas.hpp"
+#include "molsurf/true_points.hpp"
 
 #include <omp.h>
 
@@ -31,6 +32,7 @@ struct Attempt {
   SurfaceMethod method = SurfaceMethod::one_pass;
   MeshCheck check;
   std::optional<CleanupStats> cleanup;
+  std::optional<TruePointStats> true_points;
 };
 
 class Pipeline {
@@ -76,6 +78,11 @@ class Pipeline {
       attempt.cleanup = improve_surface(attempt.mesh, cleanup_options);
       seconds_.cleanup += seconds_since(clock);
       report(SurfaceStage::cleanup, 1, 1);
+    }
+    if (options_.true_points) {  // counted with the cleanup: both edit the mesh
+      clock = std::chrono::steady_clock::now();
+      attempt.true_points = move_to_true_points(attempt.mesh, atoms_, options_.spheres);
+      seconds_.cleanup += seconds_since(clock);
     }
 
     clock = std::chrono::steady_clock::now();
@@ -180,6 +187,7 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   result.method = attempt.method;
   result.check = std::move(attempt.check);
   result.cleanup = attempt.cleanup;
+  result.true_points = attempt.true_points;
   result.quality_after = result.check.quality;
   result.quality_before = result.cleanup ? result.cleanup->before : result.quality_after;
   result.seconds.total = seconds_since(start);
