@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Per-residue solvent-accessible surface area over the models of an NMR ensemble.
 
-The structure is read once with gemmi; each model's surface is computed from memory (no file
-written) and each residue's area taken from it. The plot shows the mean area of every residue
-over the models and its range; a CSV table holds the numbers (areas in square angstrom).
+The structure is read once with gemmi; each model's areas are computed from memory (no file
+written) by molsurf.areas(): the exact areas of the true spheres, with no mesh (as
+`molsurf --areas-only`; molsurf.surface(...).area_per_residue gives the same numbers and a mesh
+too). The plot shows the mean area of every residue over the models and its range; a CSV table
+holds the numbers (areas in square angstrom).
 
     PYTHONPATH=build/release/python python3 examples/residue_sasa_nmr.py [STRUCTURE [PREFIX]] [--models N]
 
@@ -35,7 +37,7 @@ def main():
 
     st = gemmi.read_structure(str(path))
     models = [int(model.name) for model in st][: args.models]
-    tables = [molsurf.surface(st, model=number).area_per_residue for number in models]
+    tables = [molsurf.areas(st, model=number).area_per_residue for number in models]
     residues = tables[0]
     for table in tables[1:]:  # NMR models share their residues
         assert np.array_equal(table[["chain", "residue_number"]], residues[["chain", "residue_number"]])

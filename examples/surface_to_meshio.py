@@ -28,8 +28,11 @@ def main(argv):
     mesh = meshio.Mesh(points=surface.vertices, cells=[("triangle", surface.faces)],
                        cell_data={"gmsh:physical": [atom], "gmsh:geometrical": [atom]})
     meshio.write(out, mesh, file_format="gmsh22", binary=False)
+    # facet_*: the triangles' own measures (what the solver integrates over); area, volume: the
+    # true spheres', exact.
     print(f"{path.name}: {len(surface.vertices)} vertices, {len(surface.faces)} triangles, "
-          f"area {surface.area:.2f} Å², volume {surface.volume:.2f} Å³")
+          f"area {surface.facet_area:.2f} Å², volume {surface.facet_volume:.2f} Å³ "
+          f"(true spheres: {surface.area:.2f} Å², {surface.volume:.2f} Å³)")
     print(f"written: {out}")
 
 

@@ -9,12 +9,15 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -24,6 +27,7 @@
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/boolean.hpp"
+#include "molsurf/compute_areas.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/gemmi_structure.hpp"
@@ -61,10 +65,28 @@ struct SurfaceData {
   molsurf::ComputedSurface computed;
   std::shared_ptr<const molsurf::Structure> structure;  // the atoms the face tags index
   molsurf::SphereOptions spheres;
+  // The true spheres' numbers as the command reports them (make_exact_report, with
+  // outer_only respected); computed.measures holds the facets'.
+  molsurf::ExactReport exact;
+  std::vector<double> exact_atom_area;
 };
 
 struct PySurface {
   std::shared_ptr<const SurfaceData> data;
+};
+
+// molsurf.areas(): the true spheres' arrangement only, no mesh (molsurf --areas-only).
+struct AreasData {
+  std::shared_ptr<const molsurf::Structure> structure;
+  molsurf::ExactReport exact;
+  std::vector<double> atom_area;
+  double probe = 0;
+  bool outer_only = false;
+  int threads = 1;
+};
+
+struct PyAreas {
+  std::shared_ptr<const AreasData> data;
 };
 
 // A read-only NumPy array over `data`, kept alive by `owner`.
@@ -227,6 +249,10 @@ molsurf::SurfaceMethod surface_method(const std::string& name) {
   throw Error("method: '" + name + "' is not a surface method (one-pass or pairwise)");
 }
 
+// The bound the structure readers put on coordinates and radii (src/io/coordinate_range.hpp):
+// beyond it doubles no longer resolve an angstrom.
+constexpr double kMaxCoordinate = 1e16;
+
 std::shared_ptr<const molsurf::Structure> atoms_from_arrays(py::handle centres, py::handle radii) {
   const auto c = as_array<double>(centres, "centres");
   const auto r = as_array<double>(radii, "radii");
@@ -242,6 +268,13 @@ std::shared_ptr<const molsurf::Structure> atoms_from_arrays(py::handle centres, 
     atom.centre = {c.data()[3 * i], c.data()[3 * i + 1], c.data()[3 * i + 2]};
     atom.radius = r.data()[i];
     atom.serial = static_cast<int>(i + 1);
+    for (const double x : {atom.centre.x, atom.centre.y, atom.centre.z})
+      if (!(std::abs(x) < kMaxCoordinate))  // NaN fails too
+        throw Error("centres: centres[" + std::to_string(i) + "] has a coordinate " +
+                    py::repr(py::float_(x)).cast<std::string>() + "; each must be a finite number below 1e16 in magnitude");
+    if (!(atom.radius >= 0 && atom.radius < kMaxCoordinate))
+      throw Error("radii: radii[" + std::to_string(i) + "] is " + py::repr(py::float_(atom.radius)).cast<std::string>() +
+                  "; each must be a finite number >= 0 (A, without the probe)");
   }
   structure->report.file = "atoms";
   structure->report.format = molsurf::StructureFormat::xyzr;  // spheres as given
@@ -250,30 +283,41 @@ std::shared_ptr<const molsurf::Structure> atoms_from_arrays(py::handle centres, 
   return structure;
 }
 
+// The atoms of surface() and areas(): a path or gemmi.Structure read with the selection
+// keywords, a molsurf.Structure as it is, or centres and radii.
+std::shared_ptr<const molsurf::Structure> atoms_argument(py::object structure, py::object centres, py::object radii,
+                                                         const std::function<molsurf::ReadOptions()>& options) {
+  const bool arrays = !centres.is_none() || !radii.is_none();
+  if (arrays) {
+    if (!structure.is_none()) throw Error("give either a structure or centres and radii, not both");
+    if (centres.is_none() || radii.is_none()) throw Error("centres and radii go together");
+    return atoms_from_arrays(centres, radii);
+  }
+  if (structure.is_none())
+    throw Error("nothing to compute: give a structure (path, molsurf.Structure, gemmi.Structure) or centres and radii");
+  if (py::isinstance<PyStructure>(structure)) return structure.cast<const PyStructure&>().structure;
+  return read_atoms(structure, options());
+}
+
+void check_probe_and_threads(double probe, int threads) {
+  // The command's bounds (--probe, --threads).
+  if (!(probe >= 0 && probe <= 1e15)) throw Error("probe: must be a finite number from 0 to 1e15 (angstrom)");
+  if (threads < 0 || threads > 1024) throw Error("threads: must be 0 (all cores) to 1024");
+}
+
 PySurface surface_py(py::object structure, py::object centres, py::object radii, double probe, double density,
                      std::optional<int> frequency, const std::string& method, bool cleanup, bool outer_only,
                      bool area_corrected, bool check, int threads, std::uint64_t max_faces, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
                      std::optional<std::filesystem::path> radius_file) {
-  if (!std::isfinite(probe) || probe < 0) throw Error("probe: must be a finite number >= 0 (angstrom)");
+  check_probe_and_threads(probe, threads);
   if (!std::isfinite(density) || density <= 0) throw Error("density: must be a finite number > 0 (vertices/A^2)");
   if (frequency && (*frequency < 1 || *frequency > 200)) throw Error("frequency: must be 1 to 200");
-  if (threads < 0 || threads > 1024) throw Error("threads: must be 0 (all cores) to 1024");
 
   auto data = std::make_shared<SurfaceData>();
-  const bool arrays = !centres.is_none() || !radii.is_none();
-  if (arrays) {
-    if (!structure.is_none()) throw Error("give either a structure or centres and radii, not both");
-    if (centres.is_none() || radii.is_none()) throw Error("centres and radii go together");
-    data->structure = atoms_from_arrays(centres, radii);
-  } else if (structure.is_none()) {
-    throw Error("nothing to compute: give a structure (path, molsurf.Structure, gemmi.Structure) or centres and radii");
-  } else if (py::isinstance<PyStructure>(structure)) {
-    data->structure = structure.cast<const PyStructure&>().structure;
-  } else {
-    data->structure = read_atoms(structure, read_options(model, chains, keep_water, hydrogens, hetatm, radius_set,
-                                                         std::move(radius_file)));
-  }
+  data->structure = atoms_argument(structure, centres, radii, [&] {
+    return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
+  });
 
   molsurf::ComputeSurfaceOptions options;
   options.spheres.probe = probe;
@@ -300,6 +344,34 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     // Other Python threads run meanwhile.
     py::gil_scoped_release release;
     data->computed = molsurf::compute_surface(data->structure->atoms, options);
+    // The true spheres' numbers, as the command's report and CSV tables give them.
+    data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
+    data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
+  }
+  return {std::move(data)};
+}
+
+PyAreas areas_py(py::object structure, py::object centres, py::object radii, double probe, bool outer_only,
+                 int threads, std::optional<int> model, py::object chains, bool keep_water, bool hydrogens,
+                 bool hetatm, const std::string& radius_set, std::optional<std::filesystem::path> radius_file) {
+  check_probe_and_threads(probe, threads);
+  auto data = std::make_shared<AreasData>();
+  data->structure = atoms_argument(structure, centres, radii, [&] {
+    return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
+  });
+  data->probe = probe;
+  data->outer_only = outer_only;
+  data->threads = threads > 0 ? threads : omp_get_max_threads();
+  molsurf::SphereOptions spheres;
+  spheres.probe = probe;
+  try {
+    py::gil_scoped_release release;
+    const molsurf::ComputedAreas computed = molsurf::compute_areas(data->structure->atoms, spheres, threads);
+    data->exact = molsurf::make_exact_report(computed.arrangement, {}, outer_only);
+    data->exact.seconds = computed.seconds;
+    data->atom_area = molsurf::exact_atom_area(computed.arrangement, outer_only);
+  } catch (const std::invalid_argument& e) {
+    throw Error(e.what());  // arrange_spheres' refusals (too many spheres, bad numbers)
   }
   return {std::move(data)};
 }
@@ -403,14 +475,32 @@ py::dict cleanup_dict(const molsurf::CleanupStats& c) {
                   "min_angle_before"_a = c.before.min_angle_deg, "min_angle_after"_a = c.after.min_angle_deg);
 }
 
+// What the arrangement of the true spheres holds (the JSON report's "arrangement").
+py::dict arrangement_dict(const molsurf::ExactReport& e) {
+  return py::dict("vertices"_a = e.vertices, "arcs"_a = e.arcs, "buried_atoms"_a = e.buried_atoms,
+                  "exact_decisions"_a = e.exact_decisions, "degenerate_points"_a = e.degenerate_points);
+}
+
+// For each mesh component, the index into `shells` of the true shell it follows, or None.
+py::list component_shells_list(const SurfaceData& d) {
+  py::list out;
+  for (const std::int64_t s : d.computed.component_shells) {
+    if (s >= 0 && static_cast<std::size_t>(s) < d.exact.shells.size()) out.append(s);
+    else out.append(py::none());
+  }
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(molsurf, m) {
   m.doc() =
       "Exact, watertight molecular surfaces (libmolsurf from Python).\n\n"
       "Lengths are in angstrom (A), areas in A^2, volumes in A^3. Arrays are NumPy arrays:\n"
-      "geometry of a result (vertices, faces, atom_of_face, area_per_atom) is a read-only view\n"
-      "of the result's own memory (np.array(x) copies it); everything else is a fresh copy.\n"
+      "geometry of a result (vertices, faces, atom_of_face, area_per_atom, facet_area_per_atom) is a\n"
+      "read-only view of the result's own memory (np.array(x) copies it); everything else is a fresh\n"
+      "copy. area, volume and the per-atom areas are the true spheres' (exact, as the command reports\n"
+      "them); facet_* are the mesh's own.\n"
       "Every library error raises molsurf.Error (a RuntimeError) with the library's message.";
   m.attr("__version__") = MOLSURF_VERSION;
   py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
@@ -684,6 +774,61 @@ PYBIND11_MODULE(molsurf, m) {
       "(vertices, faces) pair of arrays. Both must be valid closed surfaces (molsurf.check); the result\n"
       "is one too (possibly empty). Face tags of the result are those of the source faces.");
 
+  // ---- Shells of the true spheres ----
+  py::class_<molsurf::ShellReport>(m, "Shell",
+                                   "One shell of the union of the true spheres (exact, no facets): the outer surface\n"
+                                   "or a cavity.")
+      .def_property_readonly(
+          "kind", [](const molsurf::ShellReport& s) { return s.cavity ? "cavity" : "outer"; },
+          "'outer' or 'cavity'.")
+      .def_readonly("cavity", &molsurf::ShellReport::cavity, "Whether this is a cavity.")
+      .def_readonly("area", &molsurf::ShellReport::area, "Area, A^2 (exact).")
+      .def_readonly("volume", &molsurf::ShellReport::volume,
+                    "Volume, A^3, unsigned (exact): inside the outer surface, or a cavity's void.")
+      .def_property_readonly(
+          "centroid",
+          [](const molsurf::ShellReport& s) {
+            py::array_t<double> out(3);
+            double* xyz = out.mutable_data();
+            xyz[0] = s.centroid.x;
+            xyz[1] = s.centroid.y;
+            xyz[2] = s.centroid.z;
+            return out;
+          },
+          "(3,) float64, A: the area-weighted centroid of the shell's surface (copy).")
+      .def_property_readonly(
+          "atoms",
+          [](const molsurf::ShellReport& s) {
+            py::array_t<std::int32_t> out(static_cast<py::ssize_t>(s.atoms.size()));
+            std::copy(s.atoms.begin(), s.atoms.end(), out.mutable_data());
+            return out;
+          },
+          "(K,) int32: the atoms lining the shell (indices into the structure's atoms), sorted (copy).")
+      .def_property_readonly(
+          "mesh_component",
+          [](const molsurf::ShellReport& s) -> py::object {
+            if (s.mesh_component < 0) return py::none();
+            return py::int_(s.mesh_component);
+          },
+          "Index into Surface.components of the (largest) mesh component that follows this shell; None\n"
+          "when no mesh component does, or for molsurf.areas() (no mesh).")
+      .def(
+          "to_dict",
+          [](const molsurf::ShellReport& s) {
+            py::object mesh_component = py::none();
+            if (s.mesh_component >= 0) mesh_component = py::int_(s.mesh_component);
+            py::list atoms;
+            for (const std::uint32_t a : s.atoms) atoms.append(a);
+            return py::dict("kind"_a = s.cavity ? "cavity" : "outer", "area"_a = s.area, "volume"_a = s.volume,
+                            "centroid"_a = py::make_tuple(s.centroid.x, s.centroid.y, s.centroid.z),
+                            "atoms"_a = atoms, "mesh_component"_a = mesh_component);
+          },
+          "The shell as a dict, as in the command's JSON report (atoms a list, centroid a tuple).")
+      .def("__repr__", [](const molsurf::ShellReport& s) {
+        return std::string("<molsurf.Shell ") + (s.cavity ? "cavity" : "outer") + ": area " + std::to_string(s.area) +
+               " A^2, volume " + std::to_string(s.volume) + " A^3, " + std::to_string(s.atoms.size()) + " atoms>";
+      });
+
   // ---- Surface ----
   py::class_<PySurface>(m, "Surface",
                         "A solvent-accessible (or, with probe=0, van der Waals) surface: closed, 2-manifold,\n"
@@ -710,27 +855,64 @@ PYBIND11_MODULE(molsurf, m) {
           "structure", [](const PySurface& s) { return PyStructure{s.data->structure}; },
           "The atoms the surface was computed from (molsurf.Structure).")
       .def_property_readonly(
-          "area", [](const PySurface& s) { return s.data->computed.measures.area; },
-          "Total area, A^2 (outer surface and cavities).")
+          "area", [](const PySurface& s) { return s.data->exact.area; },
+          "Total area of the true spheres' union, A^2, exact to rounding (not the facets'; see\n"
+          "facet_area): the outer surface and the cavities, or with outer_only the outer surface only.\n"
+          "The command's report 'area'.")
       .def_property_readonly(
-          "volume", [](const PySurface& s) { return s.data->computed.measures.volume; },
-          "Enclosed volume, A^3: inside the outer surface minus the cavities.")
+          "volume", [](const PySurface& s) { return s.data->exact.volume; },
+          "Volume of the true spheres' union, A^3, exact to rounding: inside the outer surface minus the\n"
+          "cavities (with outer_only: inside the outer surface). The command's report 'volume'.")
+      .def_property_readonly(
+          "facet_area", [](const PySurface& s) { return s.data->computed.measures.area; },
+          "Total area of the mesh's facets, A^2 (all of its components). The report's 'facet_area'.")
+      .def_property_readonly(
+          "facet_volume", [](const PySurface& s) { return s.data->computed.measures.volume; },
+          "Volume enclosed by the facets, A^3: inside the outer surface minus the cavities. The report's\n"
+          "'facet_volume'.")
+      .def_property_readonly(
+          "shells",
+          [](const PySurface& s) { return s.data->exact.shells; },
+          "The true spheres' shells (list of molsurf.Shell, exact): the outer surface(s) first, then the\n"
+          "cavities, each by decreasing area; none of the cavities with outer_only.")
       .def_property_readonly(
           "components", [](const PySurface& s) { return s.data->computed.measures.components; },
-          "Connected parts (list of Component): the largest outer surface first, then by area; cavities\n"
-          "have negative volume.")
+          "Connected parts of the mesh (list of Component; the facets' numbers): the largest outer surface\n"
+          "first, then by area; cavities have negative volume. shells holds the true spheres' ones.")
+      .def_property_readonly(
+          "component_shells", [](const PySurface& s) { return component_shells_list(*s.data); },
+          "For each of components, the index into shells of the true shell it follows, or None (a mesh\n"
+          "cavity that no true cavity explains: a void of the facets).")
+      .def_property_readonly(
+          "arrangement", [](const PySurface& s) { return arrangement_dict(s.data->exact); },
+          "The true spheres' arrangement (dict): vertices, arcs, buried_atoms, exact_decisions,\n"
+          "degenerate_points.")
       .def_property_readonly(
           "area_per_atom",
+          [](py::object self) {
+            const std::vector<double>& area = self.cast<const PySurface&>().data->exact_atom_area;
+            return read_only_view(area.data(), {static_cast<py::ssize_t>(area.size())}, self);
+          },
+          "(N,) float64, A^2: each atom's exposed area on the true spheres (exact; with outer_only only\n"
+          "what lies on the outer surface); sums to area. The --per-atom CSV's area. Read-only view.")
+      .def_property_readonly(
+          "area_per_residue",
+          [](const PySurface& s) { return residue_table(*s.data->structure, s.data->exact_atom_area); },
+          "Structured array (copy), one row per residue in order of first appearance, fields chain,\n"
+          "residue_name, residue_number, insertion_code ('' when blank), atoms, area (A^2, exact as\n"
+          "area_per_atom). The --per-residue CSV.")
+      .def_property_readonly(
+          "facet_area_per_atom",
           [](py::object self) {
             const std::vector<double>& area = self.cast<const PySurface&>().data->computed.measures.atom_area;
             return read_only_view(area.data(), {static_cast<py::ssize_t>(area.size())}, self);
           },
-          "(N,) float64, A^2: area of the faces on each atom's sphere; sums to area. Read-only view.")
+          "(N,) float64, A^2: area of the mesh faces on each atom's sphere (atom_of_face); sums to\n"
+          "facet_area. Read-only view.")
       .def_property_readonly(
-          "area_per_residue",
+          "facet_area_per_residue",
           [](const PySurface& s) { return residue_table(*s.data->structure, s.data->computed.measures.atom_area); },
-          "Structured array (copy), one row per residue in order of first appearance, fields chain,\n"
-          "residue_name, residue_number, insertion_code ('' when blank), atoms, area (A^2).")
+          "As area_per_residue, from facet_area_per_atom (copy).")
       .def_property_readonly(
           "quality", [](const PySurface& s) { return s.data->computed.quality_after; },
           "Triangle quality of the surface (molsurf.Quality).")
@@ -744,7 +926,8 @@ PYBIND11_MODULE(molsurf, m) {
             return py::dict("union"_a = t.union_, "cleanup"_a = t.cleanup, "check"_a = t.check,
                             "measures"_a = t.measures, "total"_a = t.total);
           },
-          "Wall seconds per stage (dict): union, cleanup, check, measures, total.")
+          "Wall seconds per stage (dict): union, cleanup, check, measures (the facets' measures and the\n"
+          "true spheres' arrangement), total.")
       .def_property_readonly(
           "check", [](const PySurface& s) { return s.data->computed.check; }, "The surface's check (molsurf.Check).")
       .def_property_readonly(
@@ -777,8 +960,9 @@ PYBIND11_MODULE(molsurf, m) {
           "the files written (list of pathlib.Path).")
       .def("__repr__", [](const PySurface& s) {
         const molsurf::SurfaceMeasures& m = s.data->computed.measures;
-        return "<molsurf.Surface: " + std::to_string(m.faces) + " faces, area " + std::to_string(m.area) +
-               " A^2, volume " + std::to_string(m.volume) + " A^3>";
+        return "<molsurf.Surface: " + std::to_string(m.faces) + " faces, area " + std::to_string(s.data->exact.area) +
+               " A^2, volume " + std::to_string(s.data->exact.volume) + " A^3 (true spheres; facets " +
+               std::to_string(m.area) + " A^2, " + std::to_string(m.volume) + " A^3)>";
       });
 
   m.def("surface", &surface_py, "structure"_a = py::none(), py::kw_only(), "centres"_a = py::none(),
@@ -802,5 +986,76 @@ PYBIND11_MODULE(molsurf, m) {
         "  (False: inscribed); check: run the exact self-intersection test (closedness always is);\n"
         "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs.\n"
         "The GIL is released while it runs; Ctrl-C (KeyboardInterrupt) stops it at the next stage\n"
-        "(union, cleanup, check). Raises molsurf.Error for bad input.");
+        "(union, cleanup, check). Raises molsurf.Error for bad input.\n"
+        "area, volume, area_per_atom, area_per_residue and shells are the true spheres' (exact, as the\n"
+        "command's report and CSV tables); facet_area, facet_volume, facet_area_per_atom and components\n"
+        "are the mesh's.");
+
+  // ---- Areas only ----
+  py::class_<PyAreas>(m, "Areas",
+                      "The exact areas and volumes of the union of the true spheres (r_vdW + probe), with no\n"
+                      "mesh: what `molsurf --areas-only` reports. Equal to the same numbers of molsurf.surface()\n"
+                      "on the same atoms and probe (the same arrangement).")
+      .def_property_readonly(
+          "area", [](const PyAreas& a) { return a.data->exact.area; },
+          "Total area, A^2: the outer surface and the cavities (with outer_only: the outer surface).")
+      .def_property_readonly(
+          "volume", [](const PyAreas& a) { return a.data->exact.volume; },
+          "Volume, A^3: inside the outer surface minus the cavities (with outer_only: inside the outer\n"
+          "surface).")
+      .def_property_readonly(
+          "area_per_atom",
+          [](py::object self) {
+            const std::vector<double>& area = self.cast<const PyAreas&>().data->atom_area;
+            return read_only_view(area.data(), {static_cast<py::ssize_t>(area.size())}, self);
+          },
+          "(N,) float64, A^2: each atom's exposed area (with outer_only: on the outer surface only); sums\n"
+          "to area. The --per-atom CSV's area. Read-only view.")
+      .def_property_readonly(
+          "area_per_residue",
+          [](const PyAreas& a) { return residue_table(*a.data->structure, a.data->atom_area); },
+          "Structured array (copy) as Surface.area_per_residue: chain, residue_name, residue_number,\n"
+          "insertion_code, atoms, area (A^2).")
+      .def_property_readonly(
+          "shells", [](const PyAreas& a) { return a.data->exact.shells; },
+          "The shells (list of molsurf.Shell): the outer surface(s) first, then the cavities, each by\n"
+          "decreasing area; mesh_component is None (no mesh).")
+      .def_property_readonly(
+          "structure", [](const PyAreas& a) { return PyStructure{a.data->structure}; },
+          "The atoms the areas were computed from (molsurf.Structure).")
+      .def_property_readonly(
+          "arrangement", [](const PyAreas& a) { return arrangement_dict(a.data->exact); },
+          "The arrangement (dict): vertices, arcs, buried_atoms, exact_decisions, degenerate_points.")
+      .def_property_readonly(
+          "probe", [](const PyAreas& a) { return a.data->probe; }, "The probe radius, A.")
+      .def_property_readonly(
+          "outer_only", [](const PyAreas& a) { return a.data->outer_only; }, "Whether the cavities are left out.")
+      .def_property_readonly(
+          "seconds", [](const PyAreas& a) { return a.data->exact.seconds; }, "Wall seconds of the arrangement.")
+      .def_property_readonly(
+          "threads", [](const PyAreas& a) { return a.data->threads; }, "Threads used.")
+      .def("__repr__", [](const PyAreas& a) {
+        std::size_t cavities = 0;
+        for (const molsurf::ShellReport& s : a.data->exact.shells) cavities += s.cavity;
+        return "<molsurf.Areas: " + std::to_string(a.data->structure->atoms.size()) + " atoms, area " +
+               std::to_string(a.data->exact.area) + " A^2, volume " + std::to_string(a.data->exact.volume) + " A^3, " +
+               std::to_string(cavities) + " cavit" + (cavities == 1 ? "y" : "ies") + ">";
+      });
+
+  m.def("areas", &areas_py, "structure"_a = py::none(), py::kw_only(), "centres"_a = py::none(),
+        "radii"_a = py::none(), "probe"_a = 1.4, "outer_only"_a = false, "threads"_a = 0, "model"_a = py::none(),
+        "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
+        "radius_set"_a = "protor", "radius_file"_a = py::none(),
+        "areas(structure=None, *, centres=None, radii=None, probe=1.4, outer_only=False, threads=0,\n"
+        "      model=None, chains=None, keep_water=False, hydrogens=False, hetatm=True,\n"
+        "      radius_set='protor', radius_file=None) -> Areas\n\n"
+        "The exact solvent-accessible (probe=0: van der Waals) areas and volumes of the true spheres,\n"
+        "with no mesh: `molsurf --areas-only`. The structure is given as to surface(): a path, a\n"
+        "molsurf.Structure or a gemmi.Structure (selection keywords as read_structure), or centres\n"
+        "((N, 3), A) and radii ((N,), A, without the probe; finite, >= 0).\n"
+        "  probe: added to every radius, A; outer_only: leave the cavities out;\n"
+        "  threads: 0 for all cores (the result does not depend on it).\n"
+        "The same numbers as surface(...).area, volume, area_per_atom and shells for the same atoms and\n"
+        "probe. The GIL is released while it runs (Ctrl-C is seen when it returns). Raises\n"
+        "molsurf.Error for bad input.");
 }

@@ -65,6 +65,47 @@ def test_bad_options_and_arrays():
         molsurf.surface(42)
 
 
+@pytest.mark.parametrize("function", [molsurf.areas, molsurf.surface], ids=["areas", "surface"])
+def test_bad_spheres_raise_molsurf_error(function):
+    centres = np.zeros((2, 3))
+    centres[1, 0] = 3
+    bad = [
+        (dict(centres=[[0, 0, np.nan], [3, 0, 0]], radii=[1.5, 1.5]), r"centres: centres\[0\] has a coordinate nan"),
+        (dict(centres=[[0, 0, 0], [np.inf, 0, 0]], radii=[1.5, 1.5]), r"centres: centres\[1\] has a coordinate inf"),
+        (dict(centres=[[0, 0, 0], [-1e17, 0, 0]], radii=[1.5, 1.5]), r"centres\[1\].*below 1e16"),
+        (dict(centres=centres, radii=[1.5, -0.5]), r"radii: radii\[1\] is -0.5; each must be a finite number >= 0"),
+        (dict(centres=centres, radii=[np.nan, 1.5]), r"radii: radii\[0\] is nan"),
+        (dict(centres=centres, radii=[np.inf, 1.5]), r"radii: radii\[0\] is inf"),
+        (dict(centres=np.zeros((2, 2)), radii=[1.5, 1.5]), r"centres: expected an array of shape \(N, 3\), got \(2, 2\)"),
+        (dict(centres=np.zeros(3), radii=[1.5]), r"centres: expected an array of shape \(N, 3\), got \(3,\)"),
+        (dict(centres=centres, radii=[1.5]), r"radii: expected one per centre, shape \(2,\), got \(1,\)"),
+        (dict(centres=centres, radii=[[1.5, 1.5]]), r"radii: expected one per centre"),
+        (dict(centres=[["a", "b", "c"]], radii=[1.0]), r"centres: not convertible to a numeric array"),
+        (dict(centres=centres), r"centres and radii go together"),
+        (dict(radii=[1.5, 1.5]), r"centres and radii go together"),
+        (dict(centres=centres, radii=[1.5, 1.5], probe=-1), r"probe"),
+        (dict(centres=centres, radii=[1.5, 1.5], probe=np.nan), r"probe"),
+        (dict(centres=centres, radii=[1.5, 1.5], probe=np.inf), r"probe"),
+        (dict(centres=centres, radii=[1.5, 1.5], threads=-1), r"threads"),
+        (dict(structure="data/pdb/1crn.pdb", centres=centres, radii=[1.5, 1.5]), r"either a structure or centres"),
+        (dict(), r"nothing to compute"),
+    ]
+    for arguments, message in bad:
+        with pytest.raises(molsurf.Error, match=message):
+            function(**arguments)
+    with pytest.raises(TypeError):
+        function(42)
+
+
+def test_areas_selection_and_file_errors(data_dir, tmp_path):
+    with pytest.raises(molsurf.Error, match="missing.pdb: file not found"):
+        molsurf.areas(tmp_path / "missing.pdb")
+    with pytest.raises(molsurf.Error, match="no atoms left after filtering"):
+        molsurf.areas(data_dir / "1crn.pdb", chains="Z")
+    with pytest.raises(molsurf.Error, match="radius_set"):
+        molsurf.areas(data_dir / "1crn.pdb", radius_set="vdw")
+
+
 def test_bad_mesh_input(tmp_path):
     with pytest.raises(molsurf.Error, match="faces: face 0 refers to vertex 7"):
         molsurf.check(np.zeros((3, 3)), [[0, 1, 7]])

@@ -32,7 +32,7 @@ def test_residue_sasa_over_nmr_models(source_dir, data_dir, tmp_path):
     assert matplotlib.image.imread(str(png)).shape[:2] == (400, 1000)
     with open(tmp_path / "1j8k_residue_sasa.csv") as f:
         rows = list(csv.DictReader(f))
-    model_1 = molsurf.surface(data_dir / "1j8k.cif").area_per_residue
+    model_1 = molsurf.surface(data_dir / "1j8k.cif").area_per_residue  # exact: the same as areas()
     assert len(rows) == len(model_1) > 80
     for row, residue in zip(rows, model_1):
         assert int(row["residue_number"]) == residue["residue_number"]
@@ -46,6 +46,7 @@ def test_surface_to_meshio_msh(source_dir, data_dir, tmp_path, crambin):
     meshio = pytest.importorskip("meshio")
     out = run_example(source_dir, "surface_to_meshio.py", tmp_path)
     assert f"{len(crambin.faces)} triangles" in out
+    assert f"area {crambin.facet_area:.2f} Å²" in out and f"true spheres: {crambin.area:.2f} Å²" in out
     msh = tmp_path / "1crn.msh"
     mesh = meshio.read(msh)
     assert np.allclose(mesh.points, crambin.vertices, rtol=0, atol=1e-9)

@@ -17,6 +17,9 @@ def test_gemmi_structure_gives_the_same_surface_as_its_file(crambin, data_dir):
     assert from_gemmi.area == crambin.area and from_gemmi.volume == crambin.volume
     assert np.array_equal(from_gemmi.area_per_atom, crambin.area_per_atom)
     assert np.array_equal(from_gemmi.structure.radii, crambin.structure.radii)
+    assert from_gemmi.facet_area == crambin.facet_area
+    areas = molsurf.areas(st)
+    assert areas.area == crambin.area and np.array_equal(areas.area_per_atom, crambin.area_per_atom)
 
 
 def test_selection_keywords_apply_to_a_gemmi_structure(data_dir):
@@ -33,6 +36,8 @@ def test_selection_keywords_apply_to_a_gemmi_structure(data_dir):
         assert from_gemmi.report["dropped_hydrogen"] == from_file.report["dropped_hydrogen"]
     surface = molsurf.surface(st, model=3)
     assert surface.structure.report["model_used"] == 3
+    areas = molsurf.areas(st, model=3)
+    assert areas.structure.report["model_used"] == 3 and areas.area == surface.area
     assert np.array_equal(surface.vertices, molsurf.surface(path, model=3).vertices)
     # Coordinates are those gemmi holds: move an atom in memory, and the surface follows.
     st[2][0][0][0].pos = gemmi.Position(100.0, 100.0, 100.0)

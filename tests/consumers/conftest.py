@@ -27,7 +27,9 @@ def data_dir():
 
 
 class Run:
-    """One molsurf run: the files it wrote and its JSON report."""
+    """One molsurf run: the files it wrote and its JSON report. report["area"], report["volume"]
+    and atom_area (--per-atom's area column) are the true spheres' exact numbers;
+    report["facet_area"], report["facet_volume"] and report["components"] the mesh's."""
 
     def __init__(self, cli, structure, directory, output, *options):
         self.directory = Path(directory)
