@@ -49,6 +49,11 @@ struct ExactReport {
 ExactReport make_exact_report(const SphereArrangement& arrangement, std::span<const std::int64_t> component_shells,
                               bool outer_only = false);
 
+// The mesh's cavities (indices into `components`) that follow no true cavity as its first
+// component: voids of the facets inside the true union, or a second piece of a true cavity
+// the facets split.
+std::vector<std::size_t> artefact_components(std::span<const ComponentMeasure> components, const ExactReport& exact);
+
 struct SurfaceReport {
   ReadReport input;
   SphereOptions spheres;

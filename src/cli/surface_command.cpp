@@ -355,19 +355,6 @@ std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, c
   return made.report;
 }
 
-// The mesh cavities that follow no true cavity: voids of the facets inside the true union.
-std::vector<std::size_t> artefact_components(const SurfaceReport& report) {
-  std::vector<std::size_t> out;
-  for (std::size_t c = 0; c < report.components.size(); ++c) {
-    if (!report.components[c].cavity()) continue;
-    bool follows_a_cavity = false;
-    for (const ShellReport& s : report.exact->shells)
-      follows_a_cavity |= s.cavity && s.mesh_component == static_cast<std::int64_t>(c);
-    if (!follows_a_cavity) out.push_back(c);
-  }
-  return out;
-}
-
 void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
                    const std::filesystem::path& volume_mesh, std::span<const std::filesystem::path> written_files,
                    std::ostream& text) {
@@ -439,7 +426,7 @@ int SurfaceCommand::run() const {
   if (!computed.component_shells.empty() || !computed.exact.area_per_sphere.empty()) {
     report.exact = make_exact_report(computed.exact, computed.component_shells, outer_only);
     report.exact->seconds = computed.seconds.measures;
-    report.artefact_components = artefact_components(report);
+    report.artefact_components = artefact_components(report.components, *report.exact);
   }
   // Per atom and residue: the true spheres' areas (those of the cavities too unless they are dropped).
   const std::vector<double> atom_area =

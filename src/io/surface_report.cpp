@@ -55,6 +55,18 @@ ExactReport make_exact_report(const SphereArrangement& a, std::span<const std::i
   return r;
 }
 
+std::vector<std::size_t> artefact_components(std::span<const ComponentMeasure> components, const ExactReport& exact) {
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    if (!components[c].cavity()) continue;
+    bool follows_a_cavity = false;
+    for (const ShellReport& s : exact.shells)
+      follows_a_cavity |= s.cavity && s.mesh_component == static_cast<std::int64_t>(c);
+    if (!follows_a_cavity) out.push_back(c);
+  }
+  return out;
+}
+
 namespace {
 
 std::string fixed(double v, int decimals) {

@@ -154,6 +154,7 @@ SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::s
 
 ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  check_spheres(atoms, options.spheres);
   // Before any sphere is built: a typo in the density must not run the machine out of memory.
   check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
   ComputedSurface result;
