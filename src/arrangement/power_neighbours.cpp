@@ -53,7 +53,9 @@ PowerNeighbours power_neighbours(std::span<const Vec3> centres, std::span<const 
     if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
   std::stable_sort(taking.begin(), taking.end(),
                    [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
-  const std::size_t blocks = std::max<std::size_t>(1, (taking.size() + kBlockSpheres - 1) / kBlockSpheres);
+  // At least two slabs from a few thousand spheres on, so that two threads share the work.
+  const std::size_t blocks = std::max<std::size_t>(taking.size() >= 2000 ? 2 : 1,
+                                                   (taking.size() + kBlockSpheres - 1) / kBlockSpheres);
   const double halo = 2 * largest;
 
   PowerNeighbours out;
