@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <future>
 #include <stdexcept>
 #include <utility>
 
@@ -163,6 +164,13 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   const ThreadCountScope thread_count(result.threads);
   const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
 
+  // The true spheres' arrangement on a thread of its own, beside the mesh's stages: they
+  // leave a core idle often enough (serial passes, the ends of parallel loops) that it
+  // costs the job little wall time. Its result depends on neither thread count.
+  std::future<SphereArrangement> exact;
+  if (options.exact_areas)
+    exact = std::async(std::launch::async, [&] { return compute_areas(atoms, options.spheres, 1).arrangement; });
+
   Attempt attempt = pipeline.run(options.method);
   if (!attempt.check.valid() && attempt.method == SurfaceMethod::one_pass) {
     // The one-pass surface rounded to doubles can fail where the pairwise one, which
@@ -178,7 +186,7 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   pipeline.report(SurfaceStage::measures, 0, 1);
   result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size());
   if (options.exact_areas) {
-    result.exact = compute_areas(atoms, options.spheres).arrangement;
+    result.exact = exact.get();
     result.component_shells = shells_of_components(attempt.mesh, result.exact);
   }
   result.seconds.measures = seconds_since(clock);
