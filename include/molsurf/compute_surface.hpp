@@ -83,8 +83,12 @@ struct SurfaceMeasures {
 };
 
 // The measures of `mesh`, whose check_mesh result is `check` (area, volume and quality
-// come from there). For a surface as a lossy file holds it (written_check.hpp), too.
-SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::size_t atom_count);
+// come from there). For a surface as a lossy file holds it (written_check.hpp), too. With
+// `exact` and `component_shells`, the components are matched to its shells in the same pass
+// (shells_of_components).
+SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::size_t atom_count,
+                                const SphereArrangement* exact = nullptr,
+                                std::vector<std::int64_t>* component_shells = nullptr);
 
 struct ComputedSurface {
   Mesh mesh;  // passed its check; face tags are atom indices

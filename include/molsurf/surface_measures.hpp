@@ -29,6 +29,13 @@ std::vector<ComponentMeasure> measure_components(const Mesh& mesh);
 // votes.
 std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement);
 
+// Both at once (the components found and measured once).
+struct MeshComponentsAndShells {
+  std::vector<ComponentMeasure> components;
+  std::vector<std::int64_t> shells;
+};
+MeshComponentsAndShells measure_components_and_shells(const Mesh& mesh, const SphereArrangement& arrangement);
+
 // The mesh without its cavities (components of negative volume).
 Mesh outer_surface_only(const Mesh& mesh);
 

@@ -6,7 +6,6 @@
 #include <omp.h>
 
 #include <chrono>
-#include <future>
 #include <stdexcept>
 #include <utility>
 
@@ -141,13 +140,20 @@ SurfaceCheckFailed::SurfaceCheckFailed(MeshCheck check, Mesh mesh, std::vector<s
     : Error(check_failure_message(check)),
       failure_(std::make_shared<const Failure>(Failure{std::move(check), std::move(mesh), std::move(notes)})) {}
 
-SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::size_t atom_count) {
+SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::size_t atom_count,
+                                const SphereArrangement* exact, std::vector<std::int64_t>* component_shells) {
   SurfaceMeasures m;
   m.faces = mesh.face_count();
   m.vertices = mesh.vertex_count();
   m.area = check.area;
   m.volume = check.volume;
-  m.components = measure_components(mesh);
+  if (exact && component_shells) {
+    MeshComponentsAndShells both = measure_components_and_shells(mesh, *exact);
+    m.components = std::move(both.components);
+    *component_shells = std::move(both.shells);
+  } else {
+    m.components = measure_components(mesh);
+  }
   m.quality = check.quality;
   m.atom_area = area_per_atom(mesh, atom_count);
   return m;
@@ -164,13 +170,6 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   const ThreadCountScope thread_count(result.threads);
   const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
 
-  // The true spheres' arrangement on a thread of its own, beside the mesh's stages: they
-  // leave a core idle often enough (serial passes, the ends of parallel loops) that it
-  // costs the job little wall time. Its result depends on neither thread count.
-  std::future<SphereArrangement> exact;
-  if (options.exact_areas)
-    exact = std::async(std::launch::async, [&] { return compute_areas(atoms, options.spheres, 1).arrangement; });
-
   Attempt attempt = pipeline.run(options.method);
   if (!attempt.check.valid() && attempt.method == SurfaceMethod::one_pass) {
     // The one-pass surface rounded to doubles can fail where the pairwise one, which
@@ -184,11 +183,9 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
 
   const auto clock = std::chrono::steady_clock::now();
   pipeline.report(SurfaceStage::measures, 0, 1);
-  result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size());
-  if (options.exact_areas) {
-    result.exact = exact.get();
-    result.component_shells = shells_of_components(attempt.mesh, result.exact);
-  }
+  if (options.exact_areas) result.exact = compute_areas(atoms, options.spheres).arrangement;
+  result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size(),
+                                    options.exact_areas ? &result.exact : nullptr, &result.component_shells);
   result.seconds.measures = seconds_since(clock);
   pipeline.report(SurfaceStage::measures, 1, 1);
 

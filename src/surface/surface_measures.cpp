@@ -1,6 +1,7 @@
 #include "molsurf/surface_measures.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -53,44 +54,76 @@ std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
   return out;
 }
 
-std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement) {
-  const MeasuredComponents m = measured_components(mesh);
+namespace {
+
+// Each component (in m.order) matched to the shell whose atoms are most like its own.
+std::vector<std::int64_t> match_shells(const Mesh& mesh, const MeasuredComponents& m,
+                                       const SphereArrangement& arrangement) {
   const std::size_t atoms = arrangement.area_per_sphere.size();
-  // The shells each atom lines (an atom may line the outer surface and a cavity).
-  std::vector<std::vector<std::uint32_t>> shells_of_atom(atoms);
-  for (const ArrangementPatch& p : arrangement.patches) {
-    std::vector<std::uint32_t>& list = shells_of_atom[p.sphere];
-    if (std::find(list.begin(), list.end(), p.shell) == list.end()) list.push_back(p.shell);
+  // The shells each atom lines (an atom may line the outer surface and a cavity): CSR.
+  std::vector<std::uint32_t> first(atoms + 1, 0);
+  for (const ArrangementPatch& p : arrangement.patches) ++first[p.sphere + 1];
+  for (std::size_t a = 0; a < atoms; ++a) first[a + 1] += first[a];
+  std::vector<std::uint32_t> shells(arrangement.patches.size());
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (const ArrangementPatch& p : arrangement.patches) shells[fill[p.sphere]++] = p.shell;
   }
-  // The atoms each component's faces come from.
+  // The atoms each component's faces come from, once each.
   std::vector<std::vector<std::uint32_t>> atoms_of(m.parts.count);
+  std::vector<std::uint32_t> seen_in(atoms, std::numeric_limits<std::uint32_t>::max());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const std::int32_t t = mesh.tag(f);
-    if (t >= 0 && static_cast<std::size_t>(t) < atoms) atoms_of[m.parts.face_component[f]].push_back(t);
+    const std::uint32_t c = m.parts.face_component[f];
+    if (t < 0 || static_cast<std::size_t>(t) >= atoms || seen_in[t] == c) continue;
+    seen_in[t] = c;
+    atoms_of[c].push_back(t);
   }
   // Each component follows the shell whose atoms are most like its own (Jaccard index).
   std::vector<std::int64_t> out;
   out.reserve(m.order.size());
-  std::map<std::uint32_t, std::size_t> shared;
+  std::vector<std::uint32_t> shared(arrangement.shells.size(), 0);
+  std::vector<std::uint32_t> touched;
   for (std::size_t c : m.order) {
     std::vector<std::uint32_t>& own = atoms_of[c];
     std::sort(own.begin(), own.end());
     own.erase(std::unique(own.begin(), own.end()), own.end());
-    shared.clear();
+    touched.clear();
     for (std::uint32_t a : own)
-      for (std::uint32_t shell : shells_of_atom[a]) ++shared[shell];
+      for (std::uint32_t k = first[a]; k < first[a + 1]; ++k) {
+        const std::uint32_t shell = shells[k];
+        if (k > first[a] && std::find(&shells[first[a]], &shells[k], shell) != &shells[k]) continue;
+        if (shared[shell]++ == 0) touched.push_back(shell);
+      }
+    std::sort(touched.begin(), touched.end());
     std::int64_t best = -1;
     double score = 0;
-    for (const auto& [shell, common] : shared) {
-      const double jaccard =
-          double(common) / double(own.size() + arrangement.shells[shell].spheres.size() - common);
+    for (std::uint32_t shell : touched) {
+      const double common = shared[shell];
+      const double jaccard = common / (double(own.size() + arrangement.shells[shell].spheres.size()) - common);
       if (jaccard > score) {
         score = jaccard;
         best = shell;
       }
+      shared[shell] = 0;
     }
     out.push_back(best);
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement) {
+  return match_shells(mesh, measured_components(mesh), arrangement);
+}
+
+MeshComponentsAndShells measure_components_and_shells(const Mesh& mesh, const SphereArrangement& arrangement) {
+  const MeasuredComponents m = measured_components(mesh);
+  MeshComponentsAndShells out;
+  out.components.reserve(m.order.size());
+  for (std::size_t c : m.order) out.components.push_back(m.measures[c]);
+  out.shells = match_shells(mesh, m, arrangement);
   return out;
 }
 
