@@ -450,6 +450,8 @@ class SphereArranger {
       };
       if (careful || depth != start_depth || close(before) || close(after)) exposed_end[order[k]] = !covered_end(order[k]);
     }
+    // Most circles are covered whole (the union of the crossing caps' arcs).
+    if (std::find(exposed_end.begin(), exposed_end.end(), 1) == exposed_end.end()) return;
     auto key_of = [&](std::uint32_t e) { return vertex_key(i, cap.other, out.caps[ends[e].cap].other, ends[e].s); };
     thread_local std::vector<std::uint32_t> group;  // ends at one point, by union-find
     group.resize(ends.size());
