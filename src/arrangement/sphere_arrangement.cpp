@@ -414,12 +414,20 @@ class SphereArranger {
     // A sweep counter-clockwise over the ends counts the intervals around each; an end next
     // to another within their rounding, and every end of a circle with an interval whose
     // ends are that close (nearly tangent circles), is decided one by one instead.
+    // The ends by angle, as compact (angle, index) pairs: sorted in place, not through the
+    // ends themselves.
+    struct Position {
+      double theta;
+      std::uint32_t end;
+      bool operator<(const Position& o) const { return theta != o.theta ? theta < o.theta : end < o.end; }
+    };
+    thread_local std::vector<Position> sorted;
     thread_local std::vector<std::uint32_t> order;
+    sorted.resize(ends.size());
+    for (std::uint32_t e = 0; e < ends.size(); ++e) sorted[e] = {ends[e].theta, e};
+    std::sort(sorted.begin(), sorted.end());
     order.resize(ends.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return ends[a].theta != ends[b].theta ? ends[a].theta < ends[b].theta : a < b;
-    });
+    for (std::size_t k = 0; k < ends.size(); ++k) order[k] = sorted[k].end;
     const std::size_t n_ends = ends.size();
     bool careful = false;
     int depth = 0;
@@ -430,15 +438,13 @@ class SphereArranger {
     const int start_depth = depth;
     thread_local std::vector<char> exposed_end;
     exposed_end.assign(n_ends, 0);
+    // Entering (s = -1): exposed when no interval is open before it; leaving (s = +1): when
+    // none is open after it. Without a branch on the kind, which is unpredictable.
     for (std::size_t k = 0; k < n_ends; ++k) {
-      const Endpoint& p = ends[order[k]];
-      if (p.s < 0) {
-        exposed_end[order[k]] = depth == 0;
-        ++depth;
-      } else {
-        --depth;
-        exposed_end[order[k]] = depth == 0;
-      }
+      const int s = ends[order[k]].s;
+      const int before = depth;
+      depth -= s;
+      exposed_end[order[k]] = (s < 0 ? before : depth) == 0;
     }
     for (std::size_t k = 0; k < n_ends; ++k) {
       const Endpoint& p = ends[order[k]];
