@@ -112,5 +112,50 @@ TEST(CliAreas, CavityWithCentroidAndLiningAtoms) {
   EXPECT_EQ(list, "0,1,2,3,4,5");
 }
 
+TEST(CliAreas, PerChainAndRelativeSasa) {
+  TempDir dir;
+  const auto r = run_molsurf("-q --areas-only --per-chain chains.csv --per-residue res.csv --relative --json r.json '" +
+                                 kData + "/pdb/2hhb.pdb'",
+                             dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = read_text(dir.path() / "r.json");
+  const double area = json_number(json, "area");
+  double chains = 0;
+  for (double a : last_column(read_text(dir.path() / "chains.csv"))) chains += a;
+  EXPECT_NEAR(chains, area, 1e-10 * area);
+  EXPECT_NE(json.find("\"chains\""), std::string::npos);
+  EXPECT_NE(json.find("\"relative\""), std::string::npos);
+  // Every amino acid's relative area is its area over Tien's theoretical maximum; the haem
+  // groups have none.
+  std::istringstream rows(read_text(dir.path() / "res.csv"));
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_EQ(line, "chain,residue_name,residue_number,insertion_code,atoms,area,relative");
+  int amino = 0, other = 0;
+  while (std::getline(rows, line)) {
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+    if (line.back() == ',') f.push_back("");
+    ASSERT_EQ(f.size(), 7u) << line;
+    if (f[1] == "HEM" || f[1] == "PO4") {
+      EXPECT_EQ(f[6], "") << line;
+      ++other;
+    } else {
+      ASSERT_FALSE(f[6].empty()) << line;
+      const double max = f[1] == "ALA" ? 129 : f[1] == "GLY" ? 104 : 0;
+      if (max > 0) EXPECT_NEAR(std::stod(f[6]), std::stod(f[5]) / max, 1e-12) << line;
+      ++amino;
+    }
+  }
+  EXPECT_EQ(amino, 574);
+  EXPECT_GT(other, 0);
+  const auto empirical = run_molsurf("-q --areas-only --per-residue - --relative --relative-scale empirical '" + kData +
+                                         "/pdb/2hhb.pdb'",
+                                     dir.path());
+  ASSERT_EQ(empirical.exit_code, 0) << empirical.err;
+  EXPECT_NE(empirical.out, read_text(dir.path() / "res.csv"));
+}
+
 }  // namespace
 }  // namespace molsurf

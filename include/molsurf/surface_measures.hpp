@@ -56,4 +56,14 @@ struct ResidueArea {
 // with the summed `atom_area` of their atoms (one value per atom, as area_per_atom gives).
 std::vector<ResidueArea> area_per_residue(std::span<const Atom> atoms, std::span<const double> atom_area);
 
+// One chain's share of the surface.
+struct ChainArea {
+  std::string chain;
+  std::size_t atoms = 0, residues = 0;
+  double area = 0;  // square angstrom
+};
+
+// Chains in order of first appearance, with the summed `atom_area` of their atoms.
+std::vector<ChainArea> area_per_chain(std::span<const Atom> atoms, std::span<const double> atom_area);
+
 }  // namespace molsurf

@@ -14,6 +14,7 @@
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "molsurf/relative_area.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/sphere_arrangement.hpp"
 #include "molsurf/surface_measures.hpp"
@@ -75,6 +76,9 @@ struct SurfaceReport {
   // facets inside the true union (a cavity in the mesh only).
   std::vector<std::size_t> artefact_components;
   bool areas_only = false;  // no mesh: faces, quality, cleanup and check are absent
+  std::vector<ChainArea> chains;      // each chain's area (the exact areas when there are)
+  std::vector<ResidueArea> residues;  // listed in the JSON when `relative` is set
+  std::optional<MaxAreaScale> relative;
 };
 
 SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);
@@ -84,7 +88,11 @@ std::string surface_report_json(const SurfaceReport& report);
 // CSV tables: one row per atom with its area, and one per residue; as text, or written
 // atomically to a file.
 std::string per_atom_csv(std::span<const Atom> atoms, std::span<const double> area);
-std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area);
+// With `relative`, a `relative` column: the residue's area over its type's maximum
+// (relative_area.hpp), empty for residues without one.
+std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area,
+                            std::optional<MaxAreaScale> relative = std::nullopt);
+std::string per_chain_csv(std::span<const Atom> atoms, std::span<const double> area);
 void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area);
 void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
                            std::span<const double> area);

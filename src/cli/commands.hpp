@@ -28,7 +28,9 @@ struct SurfaceCommand {
   bool skip_cleanup = false;
   bool areas_only = false;        // the true spheres' areas and volumes, no mesh
   bool true_points = false;       // vertices moved onto the true surface after cleanup
-  std::filesystem::path json, per_atom, per_residue;
+  std::filesystem::path json, per_atom, per_residue, per_chain;
+  bool relative = false;                    // relative SASA per residue (Tien et al. 2013)
+  std::string relative_scale = "theoretical";
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
   double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;
@@ -38,6 +40,7 @@ struct SurfaceCommand {
   const CLI::Option* json_option = nullptr;
   const CLI::Option* per_atom_option = nullptr;
   const CLI::Option* per_residue_option = nullptr;
+  const CLI::Option* per_chain_option = nullptr;
   // The volume mesh around the molecule (paper §3.4).
   std::filesystem::path volume_mesh;
   double box_margin = 10;

@@ -128,6 +128,18 @@ void SurfaceCommand::add_options(CLI::App& app) {
   per_residue_option = app.add_option("--per-residue", per_residue,
                                       "Write each residue's area (A^2) to this CSV file ('-': standard output)")
                            ->group(output_group);
+  per_chain_option = app.add_option("--per-chain", per_chain,
+                                    "Write each chain's area (A^2) to this CSV file ('-': standard output)")
+                         ->group(output_group);
+  app.add_flag("--relative", relative,
+               "Add relative SASA per residue (area / the residue type's maximum, Tien et al. 2013) to\n"
+               "--per-residue's table (column 'relative') and to --json ('residues')")
+      ->group(output_group);
+  app.add_option("--relative-scale", relative_scale,
+                 "The maxima --relative divides by: theoretical (Tien et al. 2013's default) or empirical")
+      ->check(CLI::IsMember({"theoretical", "empirical"}))
+      ->capture_default_str()
+      ->group(output_group);
   app.add_flag("--areas-only", areas_only,
                "Areas and volumes only, exact from the true spheres (per atom, residue, shell, in total):\n"
                "no mesh is made and no surface file written; reports only where --json, --per-atom or\n"
@@ -217,6 +229,7 @@ std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, cons
   if (command.json_option->count() > 0) outputs.push_back({command.json, "--json"});
   if (command.per_atom_option->count() > 0) outputs.push_back({command.per_atom, "--per-atom"});
   if (command.per_residue_option->count() > 0) outputs.push_back({command.per_residue, "--per-residue"});
+  if (command.per_chain_option->count() > 0) outputs.push_back({command.per_chain, "--per-chain"});
   if (command.volume_option->count() > 0) {
     outputs.push_back({command.volume_mesh, "--volume-mesh", true});
     if (command.volume_mesh.extension() != ".msh")
@@ -355,6 +368,20 @@ std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, c
   return made.report;
 }
 
+// The per-atom, per-residue and per-chain tables the options ask for, and the report's
+// chains (and residues, with --relative).
+void add_area_tables(const SurfaceCommand& command, std::span<const Atom> atoms, std::span<const double> atom_area,
+                     SurfaceReport& report, OutputFiles& files) {
+  std::optional<MaxAreaScale> relative;
+  if (command.relative)
+    relative = command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
+  if (!command.per_residue.empty()) files.add_text(command.per_residue, per_residue_csv(atoms, atom_area, relative));
+  if (!command.per_chain.empty()) files.add_text(command.per_chain, per_chain_csv(atoms, atom_area));
+  report.chains = area_per_chain(atoms, atom_area);
+  report.relative = relative;
+  if (relative) report.residues = area_per_residue(atoms, atom_area);
+}
+
 void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
                    const std::filesystem::path& volume_mesh, std::span<const std::filesystem::path> written_files,
                    std::ostream& text) {
@@ -437,7 +464,7 @@ int SurfaceCommand::run() const {
   add_surface_files(*this, out, surface, written, check_options, inputs, outputs, files);
   const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
-  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, atom_area));
+  add_area_tables(*this, s.atoms, atom_area, report, files);
   report.seconds.write = computed.seconds.measures + seconds_since(clock);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
@@ -457,6 +484,7 @@ int SurfaceCommand::run_areas_only() const {
   if (json_option->count() > 0) outputs.push_back({json, "--json"});
   if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
   if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
+  if (per_chain_option->count() > 0) outputs.push_back({per_chain, "--per-chain"});
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
   bool report_to_stdout = false;
@@ -481,7 +509,7 @@ int SurfaceCommand::run_areas_only() const {
 
   OutputFiles files;
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
-  if (!per_residue.empty()) files.add_text(per_residue, per_residue_csv(s.atoms, atom_area));
+  add_area_tables(*this, s.atoms, atom_area, report, files);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!quiet) {

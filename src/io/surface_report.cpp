@@ -113,6 +113,16 @@ void format_shells(const SurfaceReport& r, const std::function<void(const std::s
                 " mesh void(s) inside the true union (facet artefacts; not cavities)");
 }
 
+// Each chain's area on one line (eight at most).
+std::string chain_areas(const SurfaceReport& r) {
+  std::string text;
+  for (std::size_t k = 0; k < r.chains.size() && k < 8; ++k)
+    text += (k ? ", " : "") + (r.chains[k].chain.empty() ? std::string("(none)") : r.chains[k].chain) + " " +
+            fixed(r.chains[k].area, 2);
+  if (r.chains.size() > 8) text += ", ... (--per-chain lists all)";
+  return text + " A^2";
+}
+
 }  // namespace
 
 std::string format_surface_report(const SurfaceReport& r) {
@@ -125,6 +135,7 @@ std::string format_surface_report(const SurfaceReport& r) {
     row("area", fixed(e.area, 4) + " A^2 (true spheres, exact to rounding)");
     row("volume", fixed(e.volume, 4) + " A^3 (inside the outer surface, minus cavities)");
     format_shells(r, row);
+    if (r.chains.size() > 1) row("by chain", chain_areas(r));
     row("arrangement", std::to_string(e.vertices) + " vertices, " + std::to_string(e.arcs) + " arcs, " +
                            std::to_string(e.buried_atoms) + " buried atoms");
     row("time", "read " + fixed(r.seconds.read, 2) + " s, areas " + fixed(e.seconds, 3) + " s (" +
@@ -141,6 +152,7 @@ std::string format_surface_report(const SurfaceReport& r) {
     row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
   }
   if (r.exact) format_shells(r, row);
+  if (r.chains.size() > 1) row("by chain", chain_areas(r));
   std::size_t cavities = 0;
   for (const auto& c : r.components) cavities += c.cavity();
   row(r.exact ? "mesh components" : "components", std::to_string(r.components.size() - cavities) + " outer, " + std::to_string(cavities) +
@@ -229,6 +241,30 @@ std::string surface_report_json(const SurfaceReport& r) {
     j.field("seconds", e.seconds);
     j.end_object();
   }
+  if (!r.chains.empty()) {
+    j.key("chains").begin_array();
+    for (const ChainArea& c : r.chains) {
+      j.begin_object();
+      j.field("chain", c.chain).field("atoms", c.atoms).field("residues", c.residues).field("area", c.area);
+      j.end_object();
+    }
+    j.end_array();
+  }
+  if (r.relative) {
+    j.field("relative_to", *r.relative == MaxAreaScale::theoretical ? "Tien 2013 theoretical" : "Tien 2013 empirical");
+    j.key("residues").begin_array();
+    for (const ResidueArea& res : r.residues) {
+      j.begin_object();
+      j.field("chain", res.chain).field("residue_name", res.residue_name).field("residue_number", res.residue_number);
+      j.field("insertion_code", std::string(1, res.insertion_code == ' ' ? '_' : res.insertion_code));
+      j.field("atoms", res.atoms).field("area", res.area);
+      j.key("relative");
+      if (const std::optional<double> max = max_residue_area(res.residue_name, *r.relative)) j.value(res.area / *max);
+      else j.null();
+      j.end_object();
+    }
+    j.end_array();
+  }
   if (r.areas_only) {
     j.field("threads", r.threads);
     j.key("seconds").begin_object().field("read", r.seconds.read).end_object();
@@ -298,14 +334,27 @@ void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom>
   write_file_atomically(path, per_atom_csv(atoms, area));
 }
 
-std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area) {
-  std::string csv = "chain,residue_name,residue_number,insertion_code,atoms,area\n";
-  char line[256];
+std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area,
+                            std::optional<MaxAreaScale> relative) {
+  std::string csv = std::string("chain,residue_name,residue_number,insertion_code,atoms,area") +
+                    (relative ? ",relative\n" : "\n");
+  char line[320];
   for (const ResidueArea& r : area_per_residue(atoms, area)) {
-    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%s\n", r.chain.c_str(), r.residue_name.c_str(),
-                  r.residue_number, r.insertion_code == ' ' ? '_' : r.insertion_code, r.atoms, exact_number(r.area).c_str());
+    std::string rsa;
+    if (relative)
+      if (const std::optional<double> max = max_residue_area(r.residue_name, *relative)) rsa = exact_number(r.area / *max);
+    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%s%s%s\n", r.chain.c_str(), r.residue_name.c_str(),
+                  r.residue_number, r.insertion_code == ' ' ? '_' : r.insertion_code, r.atoms,
+                  exact_number(r.area).c_str(), relative ? "," : "", rsa.c_str());
     csv += line;
   }
+  return csv;
+}
+
+std::string per_chain_csv(std::span<const Atom> atoms, std::span<const double> area) {
+  std::string csv = "chain,atoms,residues,area\n";
+  for (const ChainArea& c : area_per_chain(atoms, area))
+    csv += c.chain + "," + std::to_string(c.atoms) + "," + std::to_string(c.residues) + "," + exact_number(c.area) + "\n";
   return csv;
 }
 

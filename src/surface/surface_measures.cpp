@@ -166,4 +166,18 @@ std::vector<ResidueArea> area_per_residue(std::span<const Atom> atoms, std::span
   return rows;
 }
 
+std::vector<ChainArea> area_per_chain(std::span<const Atom> atoms, std::span<const double> atom_area) {
+  std::vector<ChainArea> rows;
+  std::map<std::string, std::size_t> index;
+  for (const ResidueArea& r : area_per_residue(atoms, atom_area)) {
+    const auto [it, inserted] = index.try_emplace(r.chain, rows.size());
+    if (inserted) rows.push_back({r.chain, 0, 0, 0.0});
+    ChainArea& c = rows[it->second];
+    c.atoms += r.atoms;
+    ++c.residues;
+    c.area += r.area;
+  }
+  return rows;
+}
+
 }  // namespace molsurf
