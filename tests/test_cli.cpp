@@ -469,7 +469,16 @@ TEST(Cli, BadOptionValuesGetOneLineMessages) {
 TEST(Cli, InputProblemsGetOneLineMessages) {
   TempDir dir;
   const std::filesystem::path d = dir.path();
-  std::ofstream(d / "zero.pqr") << "REMARK test\nATOM      1  CA  ALA A   1       1.0     2.0     3.0  0.00 1.80\n"
+  // Issue 31: an atom of radius 0 (pdb2pqr's hydroxyl hydrogens) is dropped with a note, even
+  // with --probe 0; only a file with nothing but such atoms is refused.
+  std::ofstream(d / "one_zero.pqr") << "REMARK test\nATOM      1  CA  ALA A   1       1.0     2.0     3.0  0.00 1.80\n"
+                                       "ATOM      2  CB  ALA A   1       2.0     2.0     3.0  0.00 0.00\n";
+  {
+    const auto r = run_molsurf("--probe 0 --hydrogens -o one_zero.vtp one_zero.pqr", d);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("1 atom of radius 0 (it adds nothing to the surface)"), std::string::npos) << r.out;
+  }
+  std::ofstream(d / "zero.pqr") << "REMARK test\nATOM      1  CA  ALA A   1       1.0     2.0     3.0  0.00 0.00\n"
                                    "ATOM      2  CB  ALA A   1       2.0     2.0     3.0  0.00 0.00\n";
   {
     // mmCIF whose _atom_site table has no Cartn_* columns.
@@ -490,7 +499,7 @@ TEST(Cli, InputProblemsGetOneLineMessages) {
   };
   const std::string crambin = "'" + kData + "/pdb/1crn.pdb'";
   for (const Case& c : std::vector<Case>{
-           {"--probe 0 zero.pqr", "zero.pqr: atom 2 (serial 2, CB of ALA 1"},
+           {"--probe 0 zero.pqr", "zero.pqr: no atoms left after filtering (2 atom records in model 1; dropped: 2 of radius 0"},
            {"nocartn.cif", "nocartn.cif: the _atom_site table has no _atom_site.Cartn_x column"},
            {"cut.cif.gz", "cut.cif.gz: truncated gzip file"},
            {"loop1", "symbolic link loop"},

@@ -54,6 +54,10 @@ struct ReadReport {
   std::size_t dropped_altloc = 0;      // alternate conformers not chosen
   std::size_t dropped_hetatm = 0;
   std::size_t dropped_chain = 0;
+  // PQR / xyzr atoms whose radius in the file is 0 (pdb2pqr's AMBER hydroxyl and water
+  // hydrogens): a ball of radius 0 adds nothing to a union of balls. Counted after the rules
+  // above, so records == kept + every dropped_* count.
+  std::size_t dropped_zero_radius = 0;
   std::map<std::string, std::size_t> kept_by_element;
   std::string radius_set;              // "protor", "bondi", a file name, or "file" for PQR/xyzr
   std::size_t radius_from_element = 0;  // atoms not in the table, given their element's radius

@@ -175,6 +175,7 @@ std::string dropped_summary(const ReadReport& report) {
   add(report.dropped_hetatm, "hetero (ligand/ion)");
   add(report.dropped_hydrogen, "hydrogen");
   add(report.dropped_altloc, "alternate conformers");
+  add(report.dropped_zero_radius, "of radius 0 (they add nothing to the surface)");
   return summary.empty() ? "nothing dropped" : "dropped: " + summary;
 }
 
@@ -194,6 +195,12 @@ Structure read_sphere_list(const std::filesystem::path& path, const ReadOptions&
   report.format = StructureFormat::xyzr;
   report.records = structure.atoms.size();
   report.radius_set = "file";
+  // A sphere of radius 0 adds nothing to a union of balls: dropped, and counted.
+  report.dropped_zero_radius =
+      std::erase_if(structure.atoms, [](const Atom& atom) { return atom.radius == 0; });
+  if (structure.atoms.empty())
+    fail(path, "no spheres left: all " + std::to_string(report.records) +
+                   " have radius 0, and a sphere of radius 0 adds nothing to a surface");
   count_elements(structure.atoms, report);
   return structure;
 }
@@ -250,8 +257,13 @@ Structure select_atoms(ModelRecords model, const std::filesystem::path& path, St
     else if (is_hydrogen(atom.element) && !options.keep_hydrogens) ++report.dropped_hydrogen;
     else candidates.push_back(i);
   }
-  const std::vector<std::size_t> kept = choose_conformers(model.records, candidates);
+  std::vector<std::size_t> kept = choose_conformers(model.records, candidates);
   report.dropped_altloc = candidates.size() - kept.size();
+  // Radii from the file (PQR): an atom of radius 0 (pdb2pqr gives AMBER's hydroxyl hydrogens
+  // radius 0) adds nothing to a union of balls, so it is dropped and counted, not refused.
+  if (!table)
+    report.dropped_zero_radius =
+        std::erase_if(kept, [&](std::size_t index) { return model.records[index].atom.radius == 0; });
 
   if (kept.empty()) {
     if (report.records == 0)

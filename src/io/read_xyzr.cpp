@@ -31,7 +31,9 @@ std::vector<Atom> read_xyzr(const std::filesystem::path& path) {
       values[i] = *value;
     }
     for (std::size_t i = 0; i < 4; ++i) check_coordinate_range(path, line_number, values[i], value_names[i]);
-    if (values[3] <= 0)
+    // Radius 0 is accepted here and dropped (and counted) by read_structure: such a sphere
+    // adds nothing to a union of balls. A negative radius is a mistake.
+    if (values[3] < 0)
       fail(path, line_number, "radius must be positive, found " + escaped(fields[3]));
     Atom atom;
     atom.centre = {values[0], values[1], values[2]};

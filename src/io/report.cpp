@@ -69,6 +69,8 @@ std::string format_read_report(const ReadReport& r) {
   drop(r.dropped_altloc, "alternate conformers (one kept per atom)");
   drop(r.dropped_hetatm, "hetero atoms (--no-hetatm)");
   drop(r.dropped_chain, "in other chains (--chains)");
+  drop(r.dropped_zero_radius, r.dropped_zero_radius == 1 ? "atom of radius 0 (it adds nothing to the surface)"
+                                                          : "atoms of radius 0 (they add nothing to the surface)");
   if (dropped.empty()) t.row("dropped", "none");
   for (std::size_t i = 0; i < dropped.size(); ++i) t.row(i == 0 ? "dropped" : "", dropped[i]);
   std::string elements;
