@@ -207,7 +207,7 @@ std::string surface_report_json(const SurfaceReport& r) {
   j.field("dropped_hydrogen", r.input.dropped_hydrogen).field("dropped_altloc", r.input.dropped_altloc);
   j.field("dropped_hetatm", r.input.dropped_hetatm).field("dropped_chain", r.input.dropped_chain);
   j.field("radius_set", r.input.radius_set).field("radius_from_element", r.input.radius_from_element);
-  j.field("radius_default", r.input.radius_default);
+  j.field("radius_default", r.input.radius_default).field("dropped_zero_radius", r.input.dropped_zero_radius);
   j.end_object();
   j.field("probe", r.spheres.probe).field("density", r.spheres.density).field("frequency", r.spheres.frequency);
   j.field("area_corrected", r.spheres.area_corrected);
