@@ -10,6 +10,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
+#include <exception>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -87,6 +89,23 @@ struct AreasData {
 
 struct PyAreas {
   std::shared_ptr<const AreasData> data;
+};
+
+// molsurf.areas() over a trajectory: (frames, atoms, 3) coordinates with one radius per atom.
+// Frame by frame the same numbers as areas() on that frame's coordinates.
+struct TrajectoryAreasData {
+  std::size_t frames = 0, atoms = 0;
+  std::vector<double> area_per_atom;  // frames x atoms, row-major
+  std::vector<double> area, volume;   // per frame
+  std::vector<double> radii;          // as given, without the probe
+  double probe = 0;
+  bool outer_only = false;
+  int threads = 1;
+  double seconds = 0;
+};
+
+struct PyTrajectoryAreas {
+  std::shared_ptr<const TrajectoryAreasData> data;
 };
 
 // A read-only NumPy array over `data`, kept alive by `owner`.
@@ -351,7 +370,7 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
   return {std::move(data)};
 }
 
-PyAreas areas_py(py::object structure, py::object centres, py::object radii, double probe, bool outer_only,
+PyAreas areas_single(py::object structure, py::object centres, py::object radii, double probe, bool outer_only,
                  int threads, std::optional<int> model, py::object chains, bool keep_water, bool hydrogens,
                  bool hetatm, const std::string& radius_set, std::optional<std::filesystem::path> radius_file) {
   check_probe_and_threads(probe, threads);
@@ -374,6 +393,122 @@ PyAreas areas_py(py::object structure, py::object centres, py::object radii, dou
     throw Error(e.what());  // arrange_spheres' refusals (too many spheres, bad numbers)
   }
   return {std::move(data)};
+}
+
+
+// The coordinates of every frame and one radius per atom, checked as atoms_from_arrays checks
+// one frame's; then the frames in parallel, each frame's arrangement on one thread (so the
+// result does not depend on the thread count: every frame's numbers are those of areas() on
+// its coordinates, which do not depend on it either).
+PyTrajectoryAreas trajectory_areas(py::handle coords, py::handle radii, double probe, bool outer_only, int threads) {
+  const auto c = as_array<double>(coords, "coords");
+  const auto r = as_array<double>(radii, "radii");
+  if (c.ndim() != 3 || c.shape(2) != 3)
+    throw Error("coords: expected an array of shape (frames, atoms, 3), got " + shape_text(c));
+  if (r.ndim() != 1 || r.shape(0) != c.shape(1))
+    throw Error("radii: expected one per atom, shape (" + std::to_string(c.shape(1)) + ",), got " + shape_text(r));
+  auto data = std::make_shared<TrajectoryAreasData>();
+  data->frames = static_cast<std::size_t>(c.shape(0));
+  data->atoms = static_cast<std::size_t>(c.shape(1));
+  data->probe = probe;
+  data->outer_only = outer_only;
+  data->radii.assign(r.data(), r.data() + data->atoms);
+  for (std::size_t i = 0; i < data->atoms; ++i)
+    if (!(data->radii[i] >= 0 && data->radii[i] < kMaxCoordinate))
+      throw Error("radii: radii[" + std::to_string(i) + "] is " + py::repr(py::float_(data->radii[i])).cast<std::string>() +
+                  "; each must be a finite number >= 0 (A, without the probe)");
+  const double* xyz = c.data();
+  const std::size_t values = 3 * data->frames * data->atoms;
+  for (std::size_t k = 0; k < values; ++k)
+    if (!(std::abs(xyz[k]) < kMaxCoordinate)) {  // NaN fails too
+      const std::size_t frame = k / (3 * data->atoms), atom = k / 3 % data->atoms;
+      throw Error("coords: coords[" + std::to_string(frame) + ", " + std::to_string(atom) + "] has a coordinate " +
+                  py::repr(py::float_(xyz[k])).cast<std::string>() +
+                  "; each must be a finite number below 1e16 in magnitude");
+    }
+  const int max_threads = threads > 0 ? threads : omp_get_max_threads();
+  data->threads = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(max_threads, data->frames)));
+  data->area_per_atom.assign(data->frames * data->atoms, 0.0);
+  data->area.assign(data->frames, 0.0);
+  data->volume.assign(data->frames, 0.0);
+  molsurf::SphereOptions spheres;
+  spheres.probe = probe;
+  {
+    // The array `c` (kept alive here) is read, never written, while the GIL is released.
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::exception_ptr> failed(data->frames);
+    const auto frames = static_cast<std::int64_t>(data->frames);
+    const std::size_t n = data->atoms;
+    TrajectoryAreasData& d = *data;
+#pragma omp parallel num_threads(d.threads)
+    {
+      std::vector<molsurf::Atom> atoms(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        atoms[i].radius = d.radii[i];
+        atoms[i].serial = static_cast<int>(i + 1);
+      }
+#pragma omp for schedule(dynamic, 1)
+      for (std::int64_t f = 0; f < frames; ++f) {
+        try {
+          const double* frame = xyz + 3 * n * static_cast<std::size_t>(f);
+          for (std::size_t i = 0; i < n; ++i) atoms[i].centre = {frame[3 * i], frame[3 * i + 1], frame[3 * i + 2]};
+          const molsurf::ComputedAreas computed = molsurf::compute_areas(atoms, spheres, 1);
+          const molsurf::ExactReport exact = molsurf::make_exact_report(computed.arrangement, {}, outer_only);
+          d.area[f] = exact.area;
+          d.volume[f] = exact.volume;
+          const std::vector<double> atom_area = molsurf::exact_atom_area(computed.arrangement, outer_only);
+          std::copy(atom_area.begin(), atom_area.end(), d.area_per_atom.begin() + static_cast<std::ptrdiff_t>(n * f));
+        } catch (...) {
+          failed[f] = std::current_exception();
+        }
+      }
+    }
+    d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The first failing frame's error, whatever the thread count.
+    for (std::size_t f = 0; f < d.frames; ++f) {
+      if (!failed[f]) continue;
+      try {
+        std::rethrow_exception(failed[f]);
+      } catch (const Error& e) {
+        throw Error("frame " + std::to_string(f) + ": " + e.what());
+      } catch (const std::invalid_argument& e) {
+        throw Error("frame " + std::to_string(f) + ": " + e.what());  // arrange_spheres' refusals
+      }
+    }
+  }
+  return {std::move(data)};
+}
+
+// areas(): one structure or set of centres -> Areas; coordinates of shape (frames, atoms, 3)
+// -> TrajectoryAreas. `coords` is another name for `centres`, and a NumPy array given in the
+// structure's place is taken as coordinates too.
+py::object areas_py(py::object structure, py::object centres, py::object coords, py::object radii, double probe,
+                    bool outer_only, int threads, std::optional<int> model, py::object chains, bool keep_water,
+                    bool hydrogens, bool hetatm, const std::string& radius_set,
+                    std::optional<std::filesystem::path> radius_file) {
+  if (!coords.is_none() && !centres.is_none()) throw Error("give either centres or coords (the same argument), not both");
+  const char* name = coords.is_none() && !centres.is_none() ? "centres" : "coords";
+  if (coords.is_none()) coords = centres;
+  if (py::isinstance<py::array>(structure)) {
+    if (!coords.is_none()) throw Error("coordinates given twice: as the first argument and as centres/coords");
+    coords = structure;
+    structure = py::none();
+  }
+  if (!coords.is_none() && structure.is_none() && !radii.is_none()) {
+    const auto c = as_array<double>(coords, name);
+    if (c.ndim() > 3)  // fewer dimensions: the one-frame check below names the expected shape
+      throw Error(std::string(name) + ": expected an array of shape (N, 3) or (frames, atoms, 3), got " +
+                  shape_text(c));
+    if (c.ndim() == 3) {
+      check_probe_and_threads(probe, threads);
+      return py::cast(trajectory_areas(c, radii, probe, outer_only, threads));
+    }
+    coords = c;
+  }
+  return py::cast(areas_single(std::move(structure), std::move(coords), std::move(radii), probe, outer_only, threads,
+                               model, std::move(chains), keep_water, hydrogens, hetatm, radius_set,
+                               std::move(radius_file)));
 }
 
 // ---- results -----------------------------------------------------------------------------
@@ -1042,17 +1177,77 @@ PYBIND11_MODULE(molsurf, m) {
                std::to_string(cavities) + " cavit" + (cavities == 1 ? "y" : "ies") + ">";
       });
 
+  py::class_<PyTrajectoryAreas>(
+      m, "TrajectoryAreas",
+      "The exact areas and volumes of the true spheres (r_vdW + probe) of every frame of a trajectory:\n"
+      "areas() with coordinates of shape (frames, atoms, 3). Frame k's numbers are the same doubles as\n"
+      "areas(centres=coords[k], radii=radii, probe=probe) gives.")
+      .def_property_readonly(
+          "area_per_atom",
+          [](py::object self) {
+            const TrajectoryAreasData& d = *self.cast<const PyTrajectoryAreas&>().data;
+            return read_only_view(d.area_per_atom.data(),
+                                  {static_cast<py::ssize_t>(d.frames), static_cast<py::ssize_t>(d.atoms)}, self);
+          },
+          "(frames, atoms) float64, A^2: each atom's exposed area in each frame (with outer_only: on the\n"
+          "outer surface only); each row sums to that frame's area. Read-only view.")
+      .def_property_readonly(
+          "area",
+          [](py::object self) {
+            const TrajectoryAreasData& d = *self.cast<const PyTrajectoryAreas&>().data;
+            return read_only_view(d.area.data(), {static_cast<py::ssize_t>(d.frames)}, self);
+          },
+          "(frames,) float64, A^2: each frame's total area (with outer_only: the outer surface's).")
+      .def_property_readonly(
+          "volume",
+          [](py::object self) {
+            const TrajectoryAreasData& d = *self.cast<const PyTrajectoryAreas&>().data;
+            return read_only_view(d.volume.data(), {static_cast<py::ssize_t>(d.frames)}, self);
+          },
+          "(frames,) float64, A^3: each frame's volume, inside the outer surface minus the cavities\n"
+          "(with outer_only: inside the outer surface).")
+      .def_property_readonly(
+          "radii",
+          [](py::object self) {
+            const TrajectoryAreasData& d = *self.cast<const PyTrajectoryAreas&>().data;
+            return read_only_view(d.radii.data(), {static_cast<py::ssize_t>(d.atoms)}, self);
+          },
+          "(atoms,) float64, A: the radii as given (without the probe).")
+      .def_property_readonly(
+          "frames", [](const PyTrajectoryAreas& t) { return t.data->frames; }, "Number of frames.")
+      .def_property_readonly(
+          "atoms", [](const PyTrajectoryAreas& t) { return t.data->atoms; }, "Number of atoms.")
+      .def("__len__", [](const PyTrajectoryAreas& t) { return t.data->frames; })
+      .def_property_readonly(
+          "probe", [](const PyTrajectoryAreas& t) { return t.data->probe; }, "The probe radius, A.")
+      .def_property_readonly(
+          "outer_only", [](const PyTrajectoryAreas& t) { return t.data->outer_only; },
+          "Whether the cavities are left out.")
+      .def_property_readonly(
+          "seconds", [](const PyTrajectoryAreas& t) { return t.data->seconds; }, "Wall seconds of all the frames.")
+      .def_property_readonly(
+          "threads", [](const PyTrajectoryAreas& t) { return t.data->threads; },
+          "Threads used (frames run in parallel, one thread each).")
+      .def("__repr__", [](const PyTrajectoryAreas& t) {
+        return "<molsurf.TrajectoryAreas: " + std::to_string(t.data->frames) + " frames, " +
+               std::to_string(t.data->atoms) + " atoms>";
+      });
+
   m.def("areas", &areas_py, "structure"_a = py::none(), py::kw_only(), "centres"_a = py::none(),
-        "radii"_a = py::none(), "probe"_a = 1.4, "outer_only"_a = false, "threads"_a = 0, "model"_a = py::none(),
-        "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
-        "radius_set"_a = "protor", "radius_file"_a = py::none(),
-        "areas(structure=None, *, centres=None, radii=None, probe=1.4, outer_only=False, threads=0,\n"
-        "      model=None, chains=None, keep_water=False, hydrogens=False, hetatm=True,\n"
-        "      radius_set='protor', radius_file=None) -> Areas\n\n"
+        "coords"_a = py::none(), "radii"_a = py::none(), "probe"_a = 1.4, "outer_only"_a = false, "threads"_a = 0,
+        "model"_a = py::none(), "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false,
+        "hetatm"_a = true, "radius_set"_a = "protor", "radius_file"_a = py::none(),
+        "areas(structure=None, *, centres=None, coords=None, radii=None, probe=1.4, outer_only=False,\n"
+        "      threads=0, model=None, chains=None, keep_water=False, hydrogens=False, hetatm=True,\n"
+        "      radius_set='protor', radius_file=None) -> Areas or TrajectoryAreas\n\n"
         "The exact solvent-accessible (probe=0: van der Waals) areas and volumes of the true spheres,\n"
         "with no mesh: `molsurf --areas-only`. The structure is given as to surface(): a path, a\n"
         "molsurf.Structure or a gemmi.Structure (selection keywords as read_structure), or centres\n"
-        "((N, 3), A) and radii ((N,), A, without the probe; finite, >= 0).\n"
+        "((N, 3), A) and radii ((N,), A, without the probe; finite, >= 0). coords is another name for\n"
+        "centres, and a NumPy array as the first argument is taken as coordinates too.\n"
+        "Coordinates of shape (frames, atoms, 3) with radii of shape (atoms,) give a TrajectoryAreas:\n"
+        "area_per_atom (frames, atoms), area and volume (frames,), frame k the same doubles as a call on\n"
+        "coords[k]; the frames run in parallel, each on one thread.\n"
         "  probe: added to every radius, A; outer_only: leave the cavities out;\n"
         "  threads: 0 for all cores (the result does not depend on it).\n"
         "The same numbers as surface(...).area, volume, area_per_atom and shells for the same atoms and\n"

@@ -57,3 +57,17 @@ def test_surface_to_meshio_msh(source_dir, data_dir, tmp_path, crambin):
     back = molsurf.read_mesh(msh)
     assert len(back.faces) == len(crambin.faces)
     assert molsurf.check(back).valid
+
+
+def test_trajectory_sasa_over_nmr_models(source_dir, data_dir, tmp_path):
+    gemmi = pytest.importorskip("gemmi")
+    out = run_example(source_dir, "trajectory_sasa.py", tmp_path, "--models", 5, "--threads", 2)
+    assert "1j8k.cif: 5 models" in out
+    # Each model's printed SASA is molsurf.areas() on that model alone (the same selection).
+    st = gemmi.read_structure(str(data_dir / "1j8k.cif"))
+    numbers = [int(model.name) for model in st][:5]
+    rows = {int(line.split()[0]): line.split()[1:] for line in out.splitlines() if line.split()[:1] and line.split()[0].isdigit()}
+    assert sorted(rows) == numbers
+    for number in numbers:
+        single = molsurf.areas(st, model=number)
+        assert rows[number] == [f"{single.area:.2f}", f"{single.volume:.2f}"]
