@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "molsurf/atoms.hpp"
 
 namespace molsurf {
 namespace {
@@ -155,6 +156,31 @@ TEST(CliAreas, PerChainAndRelativeSasa) {
                                      dir.path());
   ASSERT_EQ(empirical.exit_code, 0) << empirical.err;
   EXPECT_NE(empirical.out, read_text(dir.path() / "res.csv"));
+}
+
+TEST(CliAreas, SasaStructureCarriesEachAtomsAreaInItsBFactor) {
+  TempDir dir;
+  const auto r = run_molsurf("-q --areas-only --per-atom a.csv --sasa-structure s.pdb '" + kData + "/pdb/1crn.pdb'",
+                             dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto c = run_molsurf("-q --areas-only --sasa-structure s.cif '" + kData + "/pdb/1crn.pdb'", dir.path());
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  const std::vector<double> area = last_column(read_text(dir.path() / "a.csv"));
+  const Structure original = read_structure(kData + "/pdb/1crn.pdb");
+  // PDB's B-factor column holds two decimals; mmCIF's more.
+  for (const auto& [file, tolerance] : {std::pair<std::string, double>{"s.pdb", 0.005}, {"s.cif", 1e-4}}) {
+    const Structure s = read_structure(dir.path() / file);
+    ASSERT_EQ(s.atoms.size(), area.size()) << file;
+    for (std::size_t i = 0; i < area.size(); ++i) {
+      EXPECT_NEAR(s.atoms[i].b_factor, area[i], tolerance * std::max(1.0, area[i])) << file << " atom " << i;
+      EXPECT_NEAR(s.atoms[i].occupancy, original.atoms[i].radius, 1e-6) << file << " atom " << i;
+      EXPECT_EQ(s.atoms[i].atom_name, original.atoms[i].atom_name);
+      EXPECT_NEAR(s.atoms[i].centre.x, original.atoms[i].centre.x, 1e-3);
+    }
+  }
+  const auto bad = run_molsurf("--areas-only --sasa-structure s.txt '" + kData + "/pdb/1crn.pdb'", dir.path());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--sasa-structure"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ struct SurfaceCommand {
   bool skip_cleanup = false;
   bool areas_only = false;        // the true spheres' areas and volumes, no mesh
   bool true_points = false;       // vertices moved onto the true surface after cleanup
-  std::filesystem::path json, per_atom, per_residue, per_chain;
+  std::filesystem::path json, per_atom, per_residue, per_chain, sasa_structure;
   bool relative = false;                    // relative SASA per residue (Tien et al. 2013)
   std::string relative_scale = "theoretical";
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
@@ -41,6 +41,7 @@ struct SurfaceCommand {
   const CLI::Option* per_atom_option = nullptr;
   const CLI::Option* per_residue_option = nullptr;
   const CLI::Option* per_chain_option = nullptr;
+  const CLI::Option* sasa_structure_option = nullptr;
   // The volume mesh around the molecule (paper §3.4).
   std::filesystem::path volume_mesh;
   double box_margin = 10;

@@ -20,6 +20,7 @@
 #include "molsurf/surface_report.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/resource_limits.hpp"
+#include "molsurf/sasa_structure.hpp"
 #include "molsurf/split_components.hpp"
 #include "molsurf/volume_mesh.hpp"
 #include "molsurf/written_check.hpp"
@@ -131,6 +132,11 @@ void SurfaceCommand::add_options(CLI::App& app) {
   per_chain_option = app.add_option("--per-chain", per_chain,
                                     "Write each chain's area (A^2) to this CSV file ('-': standard output)")
                          ->group(output_group);
+  sasa_structure_option =
+      app.add_option("--sasa-structure", sasa_structure,
+                     "Write the structure with each atom's area (A^2) in the B-factor column and its radius in\n"
+                     "the occupancy column, as FreeSASA's --format=pdb does: FILE.pdb or FILE.cif")
+          ->group(output_group);
   app.add_flag("--relative", relative,
                "Add relative SASA per residue (area / the residue type's maximum, Tien et al. 2013) to\n"
                "--per-residue's table (column 'relative') and to --json ('residues')")
@@ -223,6 +229,14 @@ std::filesystem::path surface_output_path(const SurfaceCommand& command) {
   return out;
 }
 
+// --sasa-structure's file, its format checked before any work.
+void add_sasa_structure_output(const SurfaceCommand& command, std::vector<OutputRequest>& outputs) {
+  if (command.sasa_structure_option->count() == 0) return;
+  if (!is_sasa_structure_path(command.sasa_structure))
+    throw Error("--sasa-structure: " + command.sasa_structure.string() + " must end in .pdb, .ent, .cif or .mmcif");
+  outputs.push_back({command.sasa_structure, "--sasa-structure"});
+}
+
 // Every output the options ask for, the surface first; refuses a volume mesh that cannot be made.
 std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, const std::filesystem::path& out) {
   std::vector<OutputRequest> outputs{{out, "-o", true}};
@@ -230,6 +244,7 @@ std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, cons
   if (command.per_atom_option->count() > 0) outputs.push_back({command.per_atom, "--per-atom"});
   if (command.per_residue_option->count() > 0) outputs.push_back({command.per_residue, "--per-residue"});
   if (command.per_chain_option->count() > 0) outputs.push_back({command.per_chain, "--per-chain"});
+  add_sasa_structure_output(command, outputs);
   if (command.volume_option->count() > 0) {
     outputs.push_back({command.volume_mesh, "--volume-mesh", true});
     if (command.volume_mesh.extension() != ".msh")
@@ -377,6 +392,8 @@ void add_area_tables(const SurfaceCommand& command, std::span<const Atom> atoms,
     relative = command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
   if (!command.per_residue.empty()) files.add_text(command.per_residue, per_residue_csv(atoms, atom_area, relative));
   if (!command.per_chain.empty()) files.add_text(command.per_chain, per_chain_csv(atoms, atom_area));
+  if (!command.sasa_structure.empty())
+    files.add_text(command.sasa_structure, sasa_structure_text(command.sasa_structure, atoms, atom_area));
   report.chains = area_per_chain(atoms, atom_area);
   report.relative = relative;
   if (relative) report.residues = area_per_residue(atoms, atom_area);
@@ -485,6 +502,7 @@ int SurfaceCommand::run_areas_only() const {
   if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
   if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
   if (per_chain_option->count() > 0) outputs.push_back({per_chain, "--per-chain"});
+  add_sasa_structure_output(*this, outputs);
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
   bool report_to_stdout = false;
