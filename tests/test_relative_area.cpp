@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "atom_fixtures.hpp"
+#include "molsurf/atom_classes.hpp"
 #include "molsurf/relative_area.hpp"
 #include "molsurf/surface_measures.hpp"
 #include "molsurf/surface_report.hpp"
@@ -46,6 +47,28 @@ TEST(RelativeArea, ResidueTableGetsARelativeColumnAndChainsAddUp) {
   const std::vector<ChainArea> chains = area_per_chain(atoms, area);
   ASSERT_EQ(chains.size(), 2u);
   EXPECT_EQ(chains[0].area + chains[1].area, 30.0 + 34.5 + 10.0 + 52.0);
+}
+
+TEST(AtomClasses, PolarApolarMainAndSideChainAsFreeSasa) {
+  auto atom = [](const std::string& residue, const std::string& name, const std::string& element) {
+    Atom a = residue_atom("A", residue, 1);
+    a.atom_name = name;
+    a.element = element;
+    return a;
+  };
+  const std::vector<Atom> atoms{atom("ALA", "N", "N"),  atom("ALA", "CA", "C"),  atom("ALA", "CB", "C"),
+                                atom("SER", "OG", "O"), atom("LYS", "OXT", "O"), atom("HEM", "FE", "FE"),
+                                atom("HEM", "NA", "N"), atom("CYS", "SG", "S")};
+  const std::vector<double> area{1, 2, 4, 8, 16, 32, 64, 128};
+  EXPECT_TRUE(is_polar(atoms[0]));
+  EXPECT_FALSE(is_polar(atoms[7]));  // sulphur counts as apolar, as in FreeSASA's classes
+  EXPECT_TRUE(is_main_chain(atoms[4]));
+  EXPECT_FALSE(is_main_chain(atoms[6]));  // not an amino acid
+  const ClassAreas c = class_areas(atoms, area);
+  EXPECT_EQ(c.polar, 1 + 8 + 16 + 64);
+  EXPECT_EQ(c.apolar, 2 + 4 + 32 + 128);
+  EXPECT_EQ(c.main_chain, 1 + 2 + 16);
+  EXPECT_EQ(c.side_chain, 4 + 8 + 128);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include <optional>
 
+#include "molsurf/atom_classes.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh.hpp"
@@ -77,6 +78,7 @@ struct SurfaceReport {
   std::vector<std::size_t> artefact_components;
   bool areas_only = false;  // no mesh: faces, quality, cleanup and check are absent
   std::vector<ChainArea> chains;      // each chain's area (the exact areas when there are)
+  std::optional<ClassAreas> classes;  // polar/apolar, main/side chain (atom_classes.hpp)
   std::vector<ResidueArea> residues;  // listed in the JSON when `relative` is set
   std::optional<MaxAreaScale> relative;
 };

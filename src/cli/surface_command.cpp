@@ -395,6 +395,7 @@ void add_area_tables(const SurfaceCommand& command, std::span<const Atom> atoms,
   if (!command.sasa_structure.empty())
     files.add_text(command.sasa_structure, sasa_structure_text(command.sasa_structure, atoms, atom_area));
   report.chains = area_per_chain(atoms, atom_area);
+  report.classes = class_areas(atoms, atom_area);
   report.relative = relative;
   if (relative) report.residues = area_per_residue(atoms, atom_area);
 }

@@ -113,6 +113,12 @@ void format_shells(const SurfaceReport& r, const std::function<void(const std::s
                 " mesh void(s) inside the true union (facet artefacts; not cavities)");
 }
 
+// The class areas on one line.
+std::string class_line(const ClassAreas& c) {
+  return "polar " + fixed(c.polar, 2) + ", apolar " + fixed(c.apolar, 2) + "; main chain " + fixed(c.main_chain, 2) +
+         ", side chain " + fixed(c.side_chain, 2) + " A^2";
+}
+
 // Each chain's area on one line (eight at most).
 std::string chain_areas(const SurfaceReport& r) {
   std::string text;
@@ -136,6 +142,7 @@ std::string format_surface_report(const SurfaceReport& r) {
     row("volume", fixed(e.volume, 4) + " A^3 (inside the outer surface, minus cavities)");
     format_shells(r, row);
     if (r.chains.size() > 1) row("by chain", chain_areas(r));
+    if (r.classes) row("by class", class_line(*r.classes));
     row("arrangement", std::to_string(e.vertices) + " vertices, " + std::to_string(e.arcs) + " arcs, " +
                            std::to_string(e.buried_atoms) + " buried atoms");
     row("time", "read " + fixed(r.seconds.read, 2) + " s, areas " + fixed(e.seconds, 3) + " s (" +
@@ -153,6 +160,7 @@ std::string format_surface_report(const SurfaceReport& r) {
   }
   if (r.exact) format_shells(r, row);
   if (r.chains.size() > 1) row("by chain", chain_areas(r));
+  if (r.classes) row("by class", class_line(*r.classes));
   std::size_t cavities = 0;
   for (const auto& c : r.components) cavities += c.cavity();
   row(r.exact ? "mesh components" : "components", std::to_string(r.components.size() - cavities) + " outer, " + std::to_string(cavities) +
@@ -249,6 +257,12 @@ std::string surface_report_json(const SurfaceReport& r) {
       j.end_object();
     }
     j.end_array();
+  }
+  if (r.classes) {
+    j.key("classes").begin_object();
+    j.field("polar", r.classes->polar).field("apolar", r.classes->apolar);
+    j.field("main_chain", r.classes->main_chain).field("side_chain", r.classes->side_chain);
+    j.end_object();
   }
   if (r.relative) {
     j.field("relative_to", *r.relative == MaxAreaScale::theoretical ? "Tien 2013 theoretical" : "Tien 2013 empirical");
