@@ -183,5 +183,35 @@ TEST(CliAreas, SasaStructureCarriesEachAtomsAreaInItsBFactor) {
   EXPECT_NE(bad.err.find("--sasa-structure"), std::string::npos) << bad.err;
 }
 
+TEST(CliAreas, AllModelsOfAnNmrEnsembleInOneCall) {
+  TempDir dir;
+  const std::string file = "'" + kData + "/pdb/1j8k.cif'";
+  const auto r = run_molsurf("-q --areas-only --all-models --json all.json --per-chain chains.csv " + file, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = read_text(dir.path() / "all.json");
+  const std::size_t models = json.find("\"models\"");
+  ASSERT_NE(models, std::string::npos);
+  std::size_t count = 0;
+  for (std::size_t at = json.find("\"model\": ", models); at != std::string::npos; at = json.find("\"model\": ", at + 1))
+    ++count;
+  EXPECT_EQ(count, 20u);
+  // Each model's numbers are those of a run on that model alone, to the last bit.
+  for (const int model : {1, 7, 20}) {
+    const auto one = run_molsurf("-q --areas-only --model " + std::to_string(model) + " --json one.json " + file,
+                                 dir.path());
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const double area = json_number(read_text(dir.path() / "one.json"), "area");
+    const std::size_t entry = json.find("\"model\": " + std::to_string(model) + ",", models);
+    ASSERT_NE(entry, std::string::npos) << model;
+    EXPECT_EQ(json_number(json.substr(entry), "area"), area) << model;
+  }
+  const std::string chains = read_text(dir.path() / "chains.csv");
+  EXPECT_EQ(chains.substr(0, chains.find('\n')), "model,chain,atoms,residues,area");
+  EXPECT_EQ(std::count(chains.begin(), chains.end(), '\n'), 21);  // a header and one chain per model
+  const auto mesh = run_molsurf("--all-models -o s.vtp " + file, dir.path());
+  EXPECT_EQ(mesh.exit_code, 1);
+  EXPECT_NE(mesh.err.find("--areas-only"), std::string::npos) << mesh.err;
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -46,6 +46,7 @@ struct ReadReport {
   std::filesystem::path file;
   StructureFormat format = StructureFormat::pdb;
   std::size_t models_in_file = 1;
+  std::vector<int> model_numbers;      // every model in the file, as written, in file order
   int model_used = 1;
   std::size_t records = 0;             // atom records in the model read
   std::size_t kept = 0;
@@ -75,6 +76,9 @@ StructureFormat structure_format_from_path(const std::filesystem::path& path);
 
 // Throws molsurf::Error naming file, line and problem; also when the selection is empty.
 Structure read_structure(const std::filesystem::path& path, const ReadOptions& options = {});
+// Every model of the file (options.model is ignored), the first as read_structure gives it,
+// the others in file order; a PDB or mmCIF file is parsed once.
+std::vector<Structure> read_all_models(const std::filesystem::path& path, const ReadOptions& options = {});
 
 // Radius tables are data: built-in sets are compiled in from data/radii/*.txt.
 class RadiusTable {

@@ -56,6 +56,16 @@ ExactReport make_exact_report(const SphereArrangement& arrangement, std::span<co
 // the facets split.
 std::vector<std::size_t> artefact_components(std::span<const ComponentMeasure> components, const ExactReport& exact);
 
+// One model's numbers, for --all-models.
+struct ModelReport {
+  int model = 1;
+  std::size_t atoms = 0, cavities = 0;
+  double area = 0, volume = 0;
+  std::vector<ChainArea> chains;
+  ClassAreas classes;
+  double seconds = 0;
+};
+
 struct SurfaceReport {
   ReadReport input;
   SphereOptions spheres;
@@ -81,6 +91,7 @@ struct SurfaceReport {
   std::optional<ClassAreas> classes;  // polar/apolar, main/side chain (atom_classes.hpp)
   std::vector<ResidueArea> residues;  // listed in the JSON when `relative` is set
   std::optional<MaxAreaScale> relative;
+  std::vector<ModelReport> models;  // --all-models: every model's numbers (the rest is the first's)
 };
 
 SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);

@@ -27,6 +27,7 @@ struct SurfaceCommand {
   bool skip_check = false;
   bool skip_cleanup = false;
   bool areas_only = false;        // the true spheres' areas and volumes, no mesh
+  bool all_models = false;        // every model of the file (with areas_only)
   bool true_points = false;       // vertices moved onto the true surface after cleanup
   std::filesystem::path json, per_atom, per_residue, per_chain, sasa_structure;
   bool relative = false;                    // relative SASA per residue (Tien et al. 2013)

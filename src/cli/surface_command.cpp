@@ -44,6 +44,10 @@ void SurfaceCommand::add_options(CLI::App& app) {
   app.add_option("--chains", chains, "Keep only these chains, comma-separated (e.g. A,C); default: all")
       ->group(input);
   app.add_flag("--keep-water", read.keep_water, "Keep water molecules (dropped by default)")->group(input);
+  app.add_flag("--all-models", all_models,
+               "Every model of the file (NMR ensembles, trajectories as multi-model files), with --areas-only:\n"
+               "one line and one JSON entry ('models') per model, a 'model' column in the CSV tables")
+      ->group(input);
   app.add_flag("--hydrogens", read.keep_hydrogens, "Keep hydrogen and deuterium atoms (dropped by default)")
       ->group(input);
   app.add_flag("--no-hetatm", [this](std::int64_t) { read.keep_hetatm = false; },
@@ -400,6 +404,66 @@ void add_area_tables(const SurfaceCommand& command, std::span<const Atom> atoms,
   if (relative) report.residues = area_per_residue(atoms, atom_area);
 }
 
+// "model," before a CSV table's header and N, before each of its rows.
+std::string with_model_column(const std::string& csv, int model, bool header) {
+  std::string out;
+  std::size_t start = 0;
+  bool first = true;
+  while (start < csv.size()) {
+    const std::size_t end = csv.find('\n', start);
+    const std::string line = csv.substr(start, end - start);
+    if (first) {
+      if (header) out += "model," + line + "\n";
+    } else {
+      out += std::to_string(model) + "," + line + "\n";
+    }
+    first = false;
+    start = end == std::string::npos ? csv.size() : end + 1;
+  }
+  return out;
+}
+
+// --all-models: every model's areas (the first's already in `report`), each model's rows in
+// the tables under a leading `model` column.
+void add_model_tables(const SurfaceCommand& command, std::span<const Structure> models, SurfaceReport& report,
+                      OutputFiles& files) {
+  std::optional<MaxAreaScale> relative;
+  if (command.relative)
+    relative = command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
+  std::string atoms_csv, residues_csv, chains_csv;
+  for (std::size_t k = 0; k < models.size(); ++k) {
+    const Structure& s = models[k];
+    const ComputedAreas computed = compute_areas(s.atoms, command.spheres, command.threads);
+    const std::vector<double> area = exact_atom_area(computed.arrangement, command.outer_only);
+    const ExactReport exact = make_exact_report(computed.arrangement, {}, command.outer_only);
+    ModelReport m;
+    m.model = s.report.model_used;
+    m.atoms = s.atoms.size();
+    m.area = exact.area;
+    m.volume = exact.volume;
+    for (const ShellReport& shell : exact.shells) m.cavities += shell.cavity;
+    m.chains = area_per_chain(s.atoms, area);
+    m.classes = class_areas(s.atoms, area);
+    m.seconds = computed.seconds;
+    report.models.push_back(std::move(m));
+    if (k == 0) {
+      report.chains = report.models.back().chains;
+      report.classes = report.models.back().classes;
+      report.relative = relative;
+      if (relative) report.residues = area_per_residue(s.atoms, area);
+    }
+    if (!command.per_atom.empty()) atoms_csv += with_model_column(per_atom_csv(s.atoms, area), m.model, k == 0);
+    if (!command.per_residue.empty())
+      residues_csv += with_model_column(per_residue_csv(s.atoms, area, relative), m.model, k == 0);
+    if (!command.per_chain.empty()) chains_csv += with_model_column(per_chain_csv(s.atoms, area), m.model, k == 0);
+  }
+  if (!command.per_atom.empty()) files.add_text(command.per_atom, atoms_csv);
+  if (!command.per_residue.empty()) files.add_text(command.per_residue, residues_csv);
+  if (!command.per_chain.empty()) files.add_text(command.per_chain, chains_csv);
+  if (!command.sasa_structure.empty())
+    throw Error("--sasa-structure writes one model: drop --all-models, or give --model N");
+}
+
 void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
                    const std::filesystem::path& volume_mesh, std::span<const std::filesystem::path> written_files,
                    std::ostream& text) {
@@ -414,6 +478,8 @@ void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshRe
 
 int SurfaceCommand::run() const {
   if (areas_only) return run_areas_only();
+  if (all_models)
+    throw Error("--all-models needs --areas-only (meshes per model are not written; run once per --model for them)");
   const std::filesystem::path out = surface_output_path(*this);
   // Every output checked before any work: a wrong path costs nothing.
   const std::vector<OutputRequest> outputs = requested_outputs(*this, out);
@@ -513,7 +579,9 @@ int SurfaceCommand::run_areas_only() const {
   note_threads(*this);
   SurfaceReport report;
   const auto read_start = std::chrono::steady_clock::now();
-  const Structure s = read_structure(structure, read_options(*this));
+  const std::vector<Structure> models = all_models ? read_all_models(structure, read_options(*this))
+                                                   : std::vector<Structure>{read_structure(structure, read_options(*this))};
+  const Structure& s = models.front();
   report.seconds.read = seconds_since(read_start);
   if (!quiet) text << format_read_report(s.report) << std::flush;
   const ComputedAreas computed = compute_areas(s.atoms, spheres, threads);
@@ -527,8 +595,12 @@ int SurfaceCommand::run_areas_only() const {
   const std::vector<double> atom_area = exact_atom_area(computed.arrangement, outer_only);
 
   OutputFiles files;
-  if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
-  add_area_tables(*this, s.atoms, atom_area, report, files);
+  if (!all_models) {
+    if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
+    add_area_tables(*this, s.atoms, atom_area, report, files);
+  } else {
+    add_model_tables(*this, models, report, files);
+  }
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!quiet) {

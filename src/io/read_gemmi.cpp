@@ -153,8 +153,9 @@ void check_mmcif_coordinates(const std::filesystem::path& path, gemmi::cif::Docu
 
 }  // namespace
 
-ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
-                             std::optional<int> model) {
+namespace {
+
+gemmi::Structure read_gemmi_structure(const std::filesystem::path& path, StructureFormat format) {
   gemmi::Structure structure;
   try {
     const std::string buffer = has_gz_extension(path) ? gunzip_file(path) : read_text_file(path);
@@ -172,8 +173,22 @@ ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat 
   } catch (const std::exception& e) {
     throw Error(message_with_file(path, e.what()));
   }
+  return structure;
+}
 
-  return records_from_gemmi(structure, path, model);
+}  // namespace
+
+ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
+                             std::optional<int> model) {
+  return records_from_gemmi(read_gemmi_structure(path, format), path, model);
+}
+
+std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format) {
+  const gemmi::Structure structure = read_gemmi_structure(path, format);
+  std::vector<ModelRecords> models{records_from_gemmi(structure, path, std::nullopt)};
+  const std::vector<int> numbers = models.front().model_numbers;
+  for (std::size_t k = 1; k < numbers.size(); ++k) models.push_back(records_from_gemmi(structure, path, numbers[k]));
+  return models;
 }
 
 ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& path,

@@ -225,6 +225,32 @@ Structure read_structure(const std::filesystem::path& path, const ReadOptions& o
   return detail::select_atoms(std::move(model), path, format, options, table);
 }
 
+std::vector<Structure> read_all_models(const std::filesystem::path& path, const ReadOptions& options) {
+  const StructureFormat format = structure_format_from_path(path);
+  if (format != StructureFormat::pdb && format != StructureFormat::mmcif) {
+    // One model or few (PQR, xyzr): model by model.
+    const Structure first = read_structure(path, options);
+    std::vector<Structure> models{first};
+    for (const int number : first.report.model_numbers)
+      if (number != first.report.model_used) {
+        ReadOptions one = options;
+        one.model = number;
+        models.push_back(read_structure(path, one));
+      }
+    return models;
+  }
+  read_structure(path, [&] {  // the checks and the first model's errors, as a single read gives them
+    ReadOptions first = options;
+    first.model.reset();
+    return first;
+  }());
+  const std::optional<RadiusTable> table = detail::radius_table_for(format, options);
+  std::vector<Structure> models;
+  for (detail::ModelRecords& records : detail::read_all_with_gemmi(path, format))
+    models.push_back(detail::select_atoms(std::move(records), path, format, options, table));
+  return models;
+}
+
 namespace detail {
 
 std::optional<RadiusTable> radius_table_for(StructureFormat format, const ReadOptions& options) {
@@ -240,6 +266,7 @@ Structure select_atoms(ModelRecords model, const std::filesystem::path& path, St
   report.file = path;
   report.format = format;
   report.models_in_file = model.model_numbers.size();
+  report.model_numbers = model.model_numbers;
   report.model_used = model.model_used;
   report.records = model.records.size();
 

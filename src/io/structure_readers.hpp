@@ -33,6 +33,8 @@ struct ModelRecords {
 // PDB or mmCIF, plain or gzipped. The only translation unit that includes gemmi.
 ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
                              std::optional<int> model);
+// Every model's records, the file parsed once (the first model first, then in file order).
+std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format);
 // The records of one model of a structure gemmi holds in memory; `source` names it in messages.
 ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& source,
                                 std::optional<int> model);

@@ -143,6 +143,13 @@ std::string format_surface_report(const SurfaceReport& r) {
     format_shells(r, row);
     if (r.chains.size() > 1) row("by chain", chain_areas(r));
     if (r.classes) row("by class", class_line(*r.classes));
+    for (std::size_t k = 0; k < r.models.size(); ++k) {
+      const ModelReport& m = r.models[k];
+      char line[160];
+      std::snprintf(line, sizeof line, "model %d: %zu atoms, area %.2f A^2, volume %.2f A^3, %zu cavit%s", m.model,
+                    m.atoms, m.area, m.volume, m.cavities, m.cavities == 1 ? "y" : "ies");
+      row(k == 0 ? "every model" : "", line);
+    }
     row("arrangement", std::to_string(e.vertices) + " vertices, " + std::to_string(e.arcs) + " arcs, " +
                            std::to_string(e.buried_atoms) + " buried atoms");
     row("time", "read " + fixed(r.seconds.read, 2) + " s, areas " + fixed(e.seconds, 3) + " s (" +
@@ -275,6 +282,27 @@ std::string surface_report_json(const SurfaceReport& r) {
       j.key("relative");
       if (const std::optional<double> max = max_residue_area(res.residue_name, *r.relative)) j.value(res.area / *max);
       else j.null();
+      j.end_object();
+    }
+    j.end_array();
+  }
+  if (!r.models.empty()) {
+    j.key("models").begin_array();
+    for (const ModelReport& m : r.models) {
+      j.begin_object();
+      j.field("model", m.model).field("atoms", m.atoms).field("area", m.area).field("volume", m.volume);
+      j.field("cavities", m.cavities).field("seconds", m.seconds);
+      j.key("classes").begin_object();
+      j.field("polar", m.classes.polar).field("apolar", m.classes.apolar);
+      j.field("main_chain", m.classes.main_chain).field("side_chain", m.classes.side_chain);
+      j.end_object();
+      j.key("chains").begin_array();
+      for (const ChainArea& c : m.chains) {
+        j.begin_object();
+        j.field("chain", c.chain).field("atoms", c.atoms).field("residues", c.residues).field("area", c.area);
+        j.end_object();
+      }
+      j.end_array();
       j.end_object();
     }
     j.end_array();
