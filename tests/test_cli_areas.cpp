@@ -213,5 +213,29 @@ TEST(CliAreas, AllModelsOfAnNmrEnsembleInOneCall) {
   EXPECT_NE(mesh.err.find("--areas-only"), std::string::npos) << mesh.err;
 }
 
+// The progress bar: each stage with its percent on stderr, on a terminal or with --progress,
+// never with -q, nothing when stderr is a file and --progress is not given.
+TEST(CliProgress, StagesOnATerminalOrWhenAskedAndSilenceOtherwise) {
+  TempDir dir;
+  const std::string file = "'" + kData + "/pdb/1crn.pdb'";
+  const auto forced = run_molsurf("--progress -o s.vtp " + file, dir.path());
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  for (const char* stage : {"union ", "cleanup ", "check ", "measures "})
+    EXPECT_NE(forced.err.find(std::string("\r") + stage), std::string::npos) << stage << "\n" << forced.err;
+  EXPECT_NE(forced.err.find("100%"), std::string::npos);
+  const auto plain = run_molsurf("-o s.vtp " + file, dir.path());
+  EXPECT_EQ(plain.err.find("100%"), std::string::npos) << plain.err;
+  const auto quiet = run_molsurf("-q --progress -o s.vtp " + file, dir.path());
+  EXPECT_EQ(quiet.err, "");
+  // Under a pseudo-terminal (util-linux script): the bar without being asked; -q silences it.
+  if (std::system("command -v script > /dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) for a pseudo-terminal";
+  const std::string tty = "script -qec \"'" MOLSURF_CLI_PATH "' -o s.vtp " + file + "\" /dev/null";
+  const auto on_tty = run_molsurf("--version", dir.path(), tty + " > tty.txt 2>&1; ");
+  EXPECT_NE(read_text(dir.path() / "tty.txt").find("measures [###"), std::string::npos) << read_text(dir.path() / "tty.txt");
+  const std::string tty_quiet = "script -qec \"'" MOLSURF_CLI_PATH "' -q -o s.vtp " + file + "\" /dev/null";
+  run_molsurf("--version", dir.path(), tty_quiet + " > tty_quiet.txt 2>&1; ");
+  EXPECT_EQ(read_text(dir.path() / "tty_quiet.txt").find("[#"), std::string::npos) << read_text(dir.path() / "tty_quiet.txt");
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -35,6 +35,7 @@ struct SurfaceCommand {
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
   double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;
+  bool progress = false;  // the progress bar even when stderr is not a terminal
   // Set by add_options: whether an option was given at all (an empty value, as in
   // `-o ""`, is then an error rather than the default).
   const CLI::Option* output_option = nullptr;

@@ -176,29 +176,51 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "Threads for the union, 1 to 1024 (default, or 0: all cores); the result does not depend on it")
       ->check(whole_number(0, 1024));
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
+  app.add_flag("--progress", progress,
+               "Show the progress bar of each stage on stderr even when it is not a terminal (it shows on a\n"
+               "terminal anyway; -q silences it)");
 }
 
 namespace {
 
-// A one-line progress bar on stderr, drawn only when stderr is a terminal.
+// A progress bar per stage on stderr (percent and the stage's elapsed time), one line per
+// stage, drawn when stderr is a terminal or --progress asks, never with -q. Redrawn at most
+// ten times a second.
 class ProgressBar {
  public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
+  ProgressBar(bool quiet, bool force) : enabled_(!quiet && (force || isatty(STDERR_FILENO))) {}
   ~ProgressBar() {
-    if (drawn_) std::fprintf(stderr, "\r%60s\r", "");
+    if (line_open_) std::fputc('\n', stderr);
   }
-  void update(std::size_t done, std::size_t total) {
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+  void update(const char* stage, std::size_t done, std::size_t total) {
     if (!enabled_ || total == 0) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (stage != stage_) {
+      if (line_open_) std::fputc('\n', stderr);
+      stage_ = stage;
+      stage_start_ = now;
+      drawn_ = {};
+    }
+    if (done < total && drawn_ != std::chrono::steady_clock::time_point{} &&
+        now - drawn_ < std::chrono::milliseconds(100))
+      return;
+    drawn_ = now;
     const int width = 30, filled = static_cast<int>(width * done / total);
-    std::fprintf(stderr, "\rsurface [%s%s] %zu/%zu", std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), done, total);
+    std::fprintf(stderr, "\r%-8s [%s%s] %3d%% %7.1f s", stage, std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), static_cast<int>(100 * done / total),
+                 std::chrono::duration<double>(now - stage_start_).count());
     std::fflush(stderr);
-    drawn_ = true;
+    line_open_ = true;
   }
 
  private:
   bool enabled_;
-  bool drawn_ = false;
+  bool line_open_ = false;
+  const char* stage_ = nullptr;
+  std::chrono::steady_clock::time_point stage_start_, drawn_;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -308,11 +330,11 @@ ComputeSurfaceOptions surface_compute_options(const SurfaceCommand& command) {
 // The surface, with a progress bar unless quiet; a surface that fails its check is an
 // error that names `out`, which is then not written.
 ComputedSurface compute_with_progress(std::span<const Atom> atoms, ComputeSurfaceOptions options, bool quiet,
-                                      const std::filesystem::path& out) {
+                                      bool force_progress, const std::filesystem::path& out) {
   try {
-    ProgressBar bar(!quiet);  // erased when the call returns or throws
+    ProgressBar bar(quiet, force_progress);  // its last line ended when the call returns or throws
     options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
-      if (stage == SurfaceStage::union_) bar.update(done, total);
+      bar.update(surface_stage_name(stage), done, total);
     };
     return compute_surface(atoms, options);
   } catch (const SurfaceCheckFailed& failed) {
@@ -506,7 +528,7 @@ int SurfaceCommand::run() const {
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
   if (!quiet) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 
-  const ComputedSurface computed = compute_with_progress(s.atoms, surface_compute_options(*this), quiet, out);
+  const ComputedSurface computed = compute_with_progress(s.atoms, surface_compute_options(*this), quiet, progress, out);
   if (!quiet)
     for (const std::string& note : computed.notes) std::cerr << "molsurf: note: " << note << "\n";
   const Mesh& surface = computed.mesh;
