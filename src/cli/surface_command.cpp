@@ -409,13 +409,17 @@ std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, c
   return made.report;
 }
 
+// The maxima --relative divides by, when it is given.
+std::optional<MaxAreaScale> relative_scale(const SurfaceCommand& command) {
+  if (!command.relative) return std::nullopt;
+  return command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
+}
+
 // The per-atom, per-residue and per-chain tables the options ask for, and the report's
 // chains (and residues, with --relative).
 void add_area_tables(const SurfaceCommand& command, std::span<const Atom> atoms, std::span<const double> atom_area,
                      SurfaceReport& report, OutputFiles& files) {
-  std::optional<MaxAreaScale> relative;
-  if (command.relative)
-    relative = command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
+  const std::optional<MaxAreaScale> relative = relative_scale(command);
   if (!command.per_residue.empty()) files.add_text(command.per_residue, per_residue_csv(atoms, atom_area, relative));
   if (!command.per_chain.empty()) files.add_text(command.per_chain, per_chain_csv(atoms, atom_area));
   if (!command.sasa_structure.empty())
@@ -449,9 +453,7 @@ std::string with_model_column(const std::string& csv, int model, bool header) {
 // the tables under a leading `model` column.
 void add_model_tables(const SurfaceCommand& command, std::span<const Structure> models, SurfaceReport& report,
                       OutputFiles& files) {
-  std::optional<MaxAreaScale> relative;
-  if (command.relative)
-    relative = command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
+  const std::optional<MaxAreaScale> relative = relative_scale(command);
   std::string atoms_csv, residues_csv, chains_csv;
   for (std::size_t k = 0; k < models.size(); ++k) {
     const Structure& s = models[k];
@@ -482,8 +484,6 @@ void add_model_tables(const SurfaceCommand& command, std::span<const Structure> 
   if (!command.per_atom.empty()) files.add_text(command.per_atom, atoms_csv);
   if (!command.per_residue.empty()) files.add_text(command.per_residue, residues_csv);
   if (!command.per_chain.empty()) files.add_text(command.per_chain, chains_csv);
-  if (!command.sasa_structure.empty())
-    throw Error("--sasa-structure writes one model: drop --all-models, or give --model N");
 }
 
 void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
@@ -586,6 +586,8 @@ int SurfaceCommand::run_areas_only() const {
     if (option->count() > 0) throw Error(std::string("--areas-only writes no mesh: drop ") + name);
   if (split_components) throw Error("--areas-only writes no mesh: drop --split-components");
   if (true_points) throw Error("--areas-only writes no mesh: drop --true-points");
+  if (all_models && sasa_structure_option->count() > 0)
+    throw Error("--sasa-structure writes one model: drop --all-models, or give --model N");
   std::vector<OutputRequest> outputs;
   if (json_option->count() > 0) outputs.push_back({json, "--json"});
   if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});

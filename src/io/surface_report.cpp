@@ -113,6 +113,22 @@ void format_shells(const SurfaceReport& r, const std::function<void(const std::s
                 " mesh void(s) inside the true union (facet artefacts; not cavities)");
 }
 
+void write_chains(io::JsonWriter& j, std::span<const ChainArea> chains) {
+  j.key("chains").begin_array();
+  for (const ChainArea& c : chains) {
+    j.begin_object();
+    j.field("chain", c.chain).field("atoms", c.atoms).field("residues", c.residues).field("area", c.area);
+    j.end_object();
+  }
+  j.end_array();
+}
+
+void write_classes(io::JsonWriter& j, const ClassAreas& c) {
+  j.key("classes").begin_object();
+  j.field("polar", c.polar).field("apolar", c.apolar).field("main_chain", c.main_chain).field("side_chain", c.side_chain);
+  j.end_object();
+}
+
 // The class areas on one line.
 std::string class_line(const ClassAreas& c) {
   return "polar " + fixed(c.polar, 2) + ", apolar " + fixed(c.apolar, 2) + "; main chain " + fixed(c.main_chain, 2) +
@@ -256,21 +272,8 @@ std::string surface_report_json(const SurfaceReport& r) {
     j.field("seconds", e.seconds);
     j.end_object();
   }
-  if (!r.chains.empty()) {
-    j.key("chains").begin_array();
-    for (const ChainArea& c : r.chains) {
-      j.begin_object();
-      j.field("chain", c.chain).field("atoms", c.atoms).field("residues", c.residues).field("area", c.area);
-      j.end_object();
-    }
-    j.end_array();
-  }
-  if (r.classes) {
-    j.key("classes").begin_object();
-    j.field("polar", r.classes->polar).field("apolar", r.classes->apolar);
-    j.field("main_chain", r.classes->main_chain).field("side_chain", r.classes->side_chain);
-    j.end_object();
-  }
+  if (!r.chains.empty()) write_chains(j, r.chains);
+  if (r.classes) write_classes(j, *r.classes);
   if (r.relative) {
     j.field("relative_to", *r.relative == MaxAreaScale::theoretical ? "Tien 2013 theoretical" : "Tien 2013 empirical");
     j.key("residues").begin_array();
@@ -292,17 +295,8 @@ std::string surface_report_json(const SurfaceReport& r) {
       j.begin_object();
       j.field("model", m.model).field("atoms", m.atoms).field("area", m.area).field("volume", m.volume);
       j.field("cavities", m.cavities).field("seconds", m.seconds);
-      j.key("classes").begin_object();
-      j.field("polar", m.classes.polar).field("apolar", m.classes.apolar);
-      j.field("main_chain", m.classes.main_chain).field("side_chain", m.classes.side_chain);
-      j.end_object();
-      j.key("chains").begin_array();
-      for (const ChainArea& c : m.chains) {
-        j.begin_object();
-        j.field("chain", c.chain).field("atoms", c.atoms).field("residues", c.residues).field("area", c.area);
-        j.end_object();
-      }
-      j.end_array();
+      write_classes(j, m.classes);
+      write_chains(j, m.chains);
       j.end_object();
     }
     j.end_array();
