@@ -34,8 +34,16 @@ namespace molsurf {
 enum class SurfaceStage { union_, cleanup, check, measures };
 const char* surface_stage_name(SurfaceStage stage);  // "union", "cleanup", "check", "measures"
 
+// Which surface of the atoms: the solvent-accessible surface (the probe centre's surface:
+// spheres of r_vdW + probe), the solvent-excluded (molecular) surface (where the rolling
+// probe touches the atoms), or the van der Waals surface (spheres of r_vdW; the SAS at probe 0).
+enum class SurfaceKind { sas, ses, vdw };
+const char* surface_kind_name(SurfaceKind kind);  // "sas", "ses", "vdw"
+
 struct ComputeSurfaceOptions {
   SphereOptions spheres;
+  // With ses, spheres.probe is the rolling probe's radius (above 0); with vdw it is ignored.
+  SurfaceKind surface = SurfaceKind::sas;
   SurfaceMethod method = SurfaceMethod::one_pass;
   int threads = 0;  // for every stage; 0: all cores. The result does not depend on it.
   bool outer_only = false;  // drop the cavities (components of negative volume) before cleanup
@@ -45,7 +53,8 @@ struct ComputeSurfaceOptions {
   // manifold, oriented, outward and non-degenerate are still required.
   bool check_self_intersections = true;
   // Also the exact arrangement of the true spheres (compute_areas.hpp): exact areas and
-  // volumes per atom, shell and in total, beside the facets' own.
+  // volumes per atom, shell and in total, beside the facets' own. The SAS and vdW surfaces
+  // only: the SES's own exact values are `ses_reference`.
   bool exact_areas = true;
   // After cleanup, move the vertices onto the true spheres, circles and triple points where
   // validity allows (true_points.hpp).

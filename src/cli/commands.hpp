@@ -18,6 +18,7 @@ struct SurfaceCommand {
   ReadOptions read;
   std::string chains;
   SphereOptions spheres;
+  std::string surface = "sas";  // sas | ses | vdw
   int threads = 0;
   std::string method = "one-pass";
   bool outer_only = false;

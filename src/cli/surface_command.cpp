@@ -63,6 +63,13 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->group(input);
 
   auto* sphere = "Spheres";
+  app.add_option("--surface", surface,
+                 "Which surface: sas (solvent accessible: spheres of r_vdW + probe), ses (solvent excluded, the "
+                 "molecular surface BEM solvers use: where the rolling probe touches the atoms) or vdw (van der "
+                 "Waals: the same as --probe 0)")
+      ->check(CLI::IsMember({"sas", "ses", "vdw"}))
+      ->capture_default_str()
+      ->group(sphere);
   app.add_option("--probe", spheres.probe, "Probe radius in angstrom added to every atom; 0 gives the vdW surface")
       ->check(finite_number(0, 1e15))
       ->capture_default_str()
@@ -315,6 +322,9 @@ void note_threads(const SurfaceCommand& command) {
 ComputeSurfaceOptions surface_compute_options(const SurfaceCommand& command) {
   ComputeSurfaceOptions options;
   options.spheres = command.spheres;
+  options.surface = command.surface == "ses" ? SurfaceKind::ses
+                    : command.surface == "vdw" ? SurfaceKind::vdw
+                                               : SurfaceKind::sas;
   options.method = command.method == "pairwise" ? SurfaceMethod::pairwise : SurfaceMethod::one_pass;
   options.threads = command.threads;
   options.outer_only = command.outer_only;
@@ -353,9 +363,11 @@ MeshWriteOptions surface_write_options(const SurfaceCommand& command, std::span<
   options.threads = command.threads;
   options.msms_header = !command.no_header;
   options.msms_atom_names = !command.no_header;
-  options.surface_description =
-      std::string(command.spheres.probe > 0 ? "solvent accessible surface" : "van der Waals surface") + " for " +
-      command.structure.filename().string();
+  const bool vdw = command.surface == "vdw" || command.spheres.probe == 0;
+  options.surface_description = std::string(vdw                         ? "van der Waals surface"
+                                            : command.surface == "ses" ? "solvent excluded surface"
+                                                                       : "solvent accessible surface") +
+                                " for " + command.structure.filename().string();
   return options;
 }
 

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "common/thread_count_scope.hpp"
+#include "ses/solvent_excluded_surface.hpp"
 
 namespace molsurf {
 
@@ -61,11 +62,17 @@ class Pipeline {
     surface_options.check_size = [this, max_memory](const SurfaceSizeEstimate& estimate) {
       check_surface_memory(options_.source, estimate, max_memory);
     };
-    SurfaceResult sas = method == SurfaceMethod::pairwise ? pairwise_union(surface_options)
-                                                          : solvent_accessible_surface(atoms_, surface_options);
-    if (!sas.fallback.empty()) notes_.push_back(sas.fallback);
-    attempt.method = sas.method;
-    attempt.mesh = options_.outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
+    if (options_.surface == SurfaceKind::ses) {
+      ses_detail::ExcludedSurface ses = ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_);
+      attempt.method = SurfaceMethod::one_pass;
+      attempt.mesh = options_.outer_only ? outer_surface_only(ses.mesh) : std::move(ses.mesh);
+    } else {
+      SurfaceResult sas = method == SurfaceMethod::pairwise ? pairwise_union(surface_options)
+                                                            : solvent_accessible_surface(atoms_, surface_options);
+      if (!sas.fallback.empty()) notes_.push_back(sas.fallback);
+      attempt.method = sas.method;
+      attempt.mesh = options_.outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
+    }
     seconds_.union_ += seconds_since(clock);
     report(SurfaceStage::union_, 1, 1);
 
@@ -126,6 +133,15 @@ class Pipeline {
 
 }  // namespace
 
+const char* surface_kind_name(SurfaceKind kind) {
+  switch (kind) {
+    case SurfaceKind::sas: return "sas";
+    case SurfaceKind::ses: return "ses";
+    case SurfaceKind::vdw: return "vdw";
+  }
+  return "?";
+}
+
 const char* surface_stage_name(SurfaceStage stage) {
   switch (stage) {
     case SurfaceStage::union_: return "union";
@@ -159,8 +175,14 @@ SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::s
   return m;
 }
 
-ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options) {
+ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
   const auto start = std::chrono::steady_clock::now();
+  // The van der Waals surface is the accessible one at probe 0.
+  ComputeSurfaceOptions options = requested;
+  if (options.surface == SurfaceKind::vdw) {
+    options.surface = SurfaceKind::sas;
+    options.spheres.probe = 0;
+  }
   check_spheres(atoms, options.spheres);
   // Before any sphere is built: a typo in the density must not run the machine out of memory.
   check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
@@ -171,7 +193,7 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
 
   Attempt attempt = pipeline.run(options.method);
-  if (!attempt.check.valid() && attempt.method == SurfaceMethod::one_pass) {
+  if (!attempt.check.valid() && attempt.method == SurfaceMethod::one_pass && options.surface == SurfaceKind::sas) {
     // The one-pass surface rounded to doubles can fail where the pairwise one, which
     // repairs rounding between merges, does not: the reference method is the fallback.
     result.notes.push_back("the one-pass surface failed its check; using the pairwise union");
@@ -183,9 +205,10 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
 
   const auto clock = std::chrono::steady_clock::now();
   pipeline.report(SurfaceStage::measures, 0, 1);
-  if (options.exact_areas) result.exact = compute_areas(atoms, options.spheres).arrangement;
-  result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size(),
-                                    options.exact_areas ? &result.exact : nullptr, &result.component_shells);
+  const bool exact = options.exact_areas && options.surface == SurfaceKind::sas;
+  if (exact) result.exact = compute_areas(atoms, options.spheres).arrangement;
+  result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size(), exact ? &result.exact : nullptr,
+                                    &result.component_shells);
   result.seconds.measures = seconds_since(clock);
   pipeline.report(SurfaceStage::measures, 1, 1);
 

@@ -1,0 +1,40 @@
+#pragma once
+// The solvent-excluded (molecular) surface: the boundary of the points a probe ball rolling
+// over the van der Waals spheres cannot reach. Its solid is the solvent-accessible solid
+// eroded by the probe: the SAS solid minus the probe's sweep over the SAS boundary. The
+// sweep has three families (vertices, arcs, faces); here
+//   core   = SAS solid minus the sweep over the faces, built directly (excluded_core.hpp);
+//   sweep  = the union of probe balls at the arrangement's vertices and along its arcs
+//            (probe_sweep.hpp), joined by the one-pass union of balls;
+//   SES    = core minus sweep, by the exact Boolean difference.
+// Both operands are closed, manifold and free of self-intersections, and every decision
+// of the union and the difference is exact: the result is a valid surface by construction.
+#include <cstddef>
+#include <span>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/mesh.hpp"
+#include "molsurf/sphere_arrangement.hpp"
+#include "molsurf/surface.hpp"
+
+namespace molsurf::ses_detail {
+
+struct ExcludedSurfaceStats {
+  std::size_t sas_faces = 0, core_faces = 0, probes = 0, sweep_faces = 0;
+  std::size_t pinched_vertices = 0;
+  double seconds_sas = 0, seconds_arrangement = 0, seconds_core = 0, seconds_sweep = 0, seconds_difference = 0;
+};
+
+struct ExcludedSurface {
+  Mesh mesh;  // face tags: atom index (the nearest atom the probe touched, for sweep faces)
+  SphereArrangement arrangement;  // of the SAS spheres (r_vdW + probe)
+  ExcludedSurfaceStats stats;
+};
+
+// spheres.probe > 0 and every atom's radius > 0 (throws molsurf::Error otherwise).
+ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads);
+
+// The spacing of probe centres along an arc at this density (vertices per square angstrom).
+double probe_spacing(double density);
+
+}  // namespace molsurf::ses_detail
