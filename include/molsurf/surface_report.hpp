@@ -69,6 +69,7 @@ struct ModelReport {
 struct SurfaceReport {
   ReadReport input;
   SphereOptions spheres;
+  std::string surface = "sas";  // which surface: sas, ses or vdw (surface_kind_name)
   std::size_t faces = 0, vertices = 0;
   double area = 0, volume = 0;
   std::vector<ComponentMeasure> components;

@@ -70,10 +70,25 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->check(CLI::IsMember({"sas", "ses", "vdw"}))
       ->capture_default_str()
       ->group(sphere);
-  app.add_option("--probe", spheres.probe, "Probe radius in angstrom added to every atom; 0 gives the vdW surface")
-      ->check(finite_number(0, 1e15))
+  auto* probe_option =
+      app.add_option("--probe", spheres.probe,
+                     "Probe radius in angstrom: added to every atom for the SAS, the rolling ball for the SES; 0 gives "
+                     "the vdW surface")
+          ->check(finite_number(0, 1e15))
       ->capture_default_str()
       ->group(sphere);
+  // The surface kind settles the probe the spheres get, before anything reads it.
+  app.parse_complete_callback([this, probe_option] {
+    if (surface == "vdw") {
+      if (probe_option->count() > 0 && spheres.probe != 0)
+        throw CLI::ValidationError("--surface vdw", "is the surface at probe 0: drop --probe");
+      spheres.probe = 0;
+    } else if (surface == "ses") {
+      if (spheres.probe == 0)
+        throw CLI::ValidationError("--surface ses",
+                                   "needs a probe radius above 0 (at 0 it is the van der Waals surface: --surface vdw)");
+    }
+  });
   std::ostringstream density_help;
   density_help << "Icosphere vertices per square angstrom of sphere surface (MSMS's convention); a sphere under "
                << spheres.min_density_radius << " A gets the frequency of one of " << spheres.min_density_radius
@@ -511,6 +526,15 @@ void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshRe
 }  // namespace
 
 int SurfaceCommand::run() const {
+  if (surface == "ses") {
+    // What reads the true spheres of the SAS has no SES counterpart yet.
+    const std::pair<bool, const char*> sas_only[] = {{areas_only, "--areas-only (the SAS's exact areas)"},
+                                                     {true_points, "--true-points"},
+                                                     {relative, "--relative (relative SASA)"},
+                                                     {method != "one-pass", "--method"}};
+    for (const auto& [given, name] : sas_only)
+      if (given) throw Error(std::string("--surface ses: ") + name + " applies to the SAS and vdW surfaces only");
+  }
   if (areas_only) return run_areas_only();
   if (all_models)
     throw Error("--all-models needs --areas-only (meshes per model are not written; run once per --model for them)");
@@ -566,6 +590,7 @@ int SurfaceCommand::run() const {
   describe_written_surface(measures, computed, written, report);
   report.input = s.report;
   report.spheres = spheres;
+  report.surface = this->surface;
   report.output = out;
   report.outer_only = outer_only;
   if (!computed.component_shells.empty() || !computed.exact.area_per_sphere.empty()) {

@@ -172,7 +172,10 @@ std::string format_surface_report(const SurfaceReport& r) {
                     std::to_string(r.threads) + " thread" + (r.threads == 1 ? "" : "s") + ")");
     return out;
   }
-  row("surface", r.output.string() + (r.outer_only ? " (outer surface only)" : ""));
+  const char* kind = r.surface == "ses"   ? " (solvent-excluded)"
+                     : r.surface == "vdw" ? " (van der Waals)"
+                                          : " (solvent-accessible)";
+  row("surface", r.output.string() + kind + (r.outer_only ? ", outer surface only" : ""));
   row("faces / vertices", std::to_string(r.faces) + " / " + std::to_string(r.vertices));
   if (r.exact) {
     row("area", fixed(r.exact->area, 2) + " A^2 (true spheres; the facets: " + fixed(r.area, 2) + " A^2)");
@@ -240,6 +243,7 @@ std::string surface_report_json(const SurfaceReport& r) {
   j.field("radius_set", r.input.radius_set).field("radius_from_element", r.input.radius_from_element);
   j.field("radius_default", r.input.radius_default).field("dropped_zero_radius", r.input.dropped_zero_radius);
   j.end_object();
+  j.field("surface", r.surface);
   j.field("probe", r.spheres.probe).field("density", r.spheres.density).field("frequency", r.spheres.frequency);
   j.field("area_corrected", r.spheres.area_corrected);
   j.field("areas_only", r.areas_only);
