@@ -324,7 +324,15 @@ void check_probe_and_threads(double probe, int threads) {
   if (threads < 0 || threads > 1024) throw Error("threads: must be 0 (all cores) to 1024");
 }
 
-PySurface surface_py(py::object structure, py::object centres, py::object radii, double probe, double density,
+molsurf::SurfaceKind surface_kind(const std::string& name) {
+  if (name == "sas") return molsurf::SurfaceKind::sas;
+  if (name == "ses") return molsurf::SurfaceKind::ses;
+  if (name == "vdw") return molsurf::SurfaceKind::vdw;
+  throw Error("surface: must be 'sas', 'ses' or 'vdw', not '" + name + "'");
+}
+
+PySurface surface_py(py::object structure, py::object centres, py::object radii, const std::string& surface,
+                     double probe, double density,
                      std::optional<int> frequency, const std::string& method, bool cleanup, bool outer_only,
                      bool area_corrected, bool check, int threads, std::uint64_t max_faces, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
@@ -339,6 +347,12 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
   });
 
   molsurf::ComputeSurfaceOptions options;
+  options.surface = surface_kind(surface);
+  if (options.surface == molsurf::SurfaceKind::vdw) probe = 0;
+  if (options.surface == molsurf::SurfaceKind::ses && probe == 0)
+    throw Error("surface='ses' needs a probe radius above 0 (at 0 it is the van der Waals surface: surface='vdw')");
+  if (options.surface == molsurf::SurfaceKind::ses && method != "one-pass")
+    throw Error("method: applies to the SAS and vdW surfaces only");
   options.spheres.probe = probe;
   options.spheres.density = density;
   options.spheres.frequency = frequency.value_or(0);
@@ -364,8 +378,16 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     py::gil_scoped_release release;
     data->computed = molsurf::compute_surface(data->structure->atoms, options);
     // The true spheres' numbers, as the command's report and CSV tables give them.
-    data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
-    data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
+    if (options.surface == molsurf::SurfaceKind::ses) {
+      // No exact SES values yet: the facets' stand in, so area, volume and atom_areas agree.
+      const molsurf::SurfaceMeasures& m = data->computed.measures;
+      data->exact.area = m.area;
+      data->exact.volume = m.volume;
+      data->exact_atom_area = m.atom_area;
+    } else {
+      data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
+      data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
+    }
   }
   return {std::move(data)};
 }
@@ -1101,12 +1123,13 @@ PYBIND11_MODULE(molsurf, m) {
       });
 
   m.def("surface", &surface_py, "structure"_a = py::none(), py::kw_only(), "centres"_a = py::none(),
-        "radii"_a = py::none(), "probe"_a = 1.4, "density"_a = 2.0, "frequency"_a = py::none(),
+        "radii"_a = py::none(), "surface"_a = "sas", "probe"_a = 1.4, "density"_a = 2.0, "frequency"_a = py::none(),
         "method"_a = "one-pass", "cleanup"_a = true, "outer_only"_a = false, "area_corrected"_a = true,
         "check"_a = true, "threads"_a = 0, "max_faces"_a = molsurf::kDefaultMaxSphereFaces, "model"_a = py::none(),
         "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
         "radius_set"_a = "protor", "radius_file"_a = py::none(),
-        "surface(structure=None, *, centres=None, radii=None, probe=1.4, density=2.0, frequency=None,\n"
+        "surface(structure=None, *, centres=None, radii=None, surface='sas', probe=1.4, density=2.0,\n"
+        "        frequency=None,\n"
         "        method='one-pass', cleanup=True, outer_only=False, area_corrected=True, check=True,\n"
         "        threads=0, max_faces=300000000, model=None, chains=None, keep_water=False,\n"
         "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None) -> Surface\n\n"
@@ -1114,6 +1137,8 @@ PYBIND11_MODULE(molsurf, m) {
         "structure is a path (str or os.PathLike; read with the selection keywords, as read_structure),\n"
         "a molsurf.Structure, or a gemmi.Structure (no file written; selection keywords apply); or give\n"
         "centres ((N, 3), A) and radii ((N,), A) instead.\n"
+        "  surface: 'sas' (solvent accessible, default), 'ses' (solvent excluded: where the rolling probe\n"
+        "    touches the atoms; area and volume are then the facets') or 'vdw' (probe 0);\n"
         "  probe: probe radius added to every atom, A (0: van der Waals surface);\n"
         "  density: icosphere vertices per A^2 of sphere; frequency: fixed icosphere frequency instead;\n"
         "  method: 'one-pass' (default) or 'pairwise' (the reference); cleanup: remove slivers;\n"
