@@ -103,6 +103,90 @@ TEST(SolventExcludedSurface, VolumeOfACrambinFragmentMatchesTheDistanceReference
   }
 }
 
+struct Placement {
+  const char* name;
+  std::vector<Atom> atoms;
+  double probe = 1.4;
+  long euler = 2;  // of the whole surface: 2 per sphere-like shell, 0 per torus-like one
+};
+
+std::vector<Atom> ring(int n, double radius, double atom_radius) {
+  std::vector<Atom> atoms;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    atoms.push_back(atom_at({radius * std::cos(a), radius * std::sin(a), 0}, atom_radius));
+  }
+  return atoms;
+}
+
+// Atoms spread evenly on a sphere (a golden-angle spiral): a cage with a void inside.
+std::vector<Atom> cage(int n, double radius, double atom_radius) {
+  std::vector<Atom> atoms;
+  for (int k = 0; k < n; ++k) {
+    const double z = 1 - (2.0 * k + 1) / n, r = std::sqrt(1 - z * z), a = k * std::numbers::pi * (3 - std::sqrt(5.0));
+    atoms.push_back(atom_at({radius * r * std::cos(a), radius * r * std::sin(a), radius * z}, atom_radius));
+  }
+  return atoms;
+}
+
+std::vector<Placement> degenerate_placements() {
+  const double s = 5.0 / std::sqrt(3.0);  // a triangle of side 5: the probes above and below overlap
+  std::vector<Placement> p;
+  p.push_back({"probes above and below a triangle overlap (exactly symmetric)",
+               {atom_at({s, 0, 0}, 1.7), atom_at({-s / 2, s * std::sqrt(3.0) / 2, 0}, 1.7),
+                atom_at({-s / 2, -s * std::sqrt(3.0) / 2, 0}, 1.7)},
+               1.4,
+               0});
+  // Six atoms in a ring: a probe at its centre touches all six at ring radius 3.1 (it passes
+  // above that); below, the probes touching all six from above and below overlap (a tunnel
+  // in the SES, through a point where six spheres meet) down to ring radius 2.77, and the
+  // hole closes under it.
+  p.push_back({"ring whose hole the probe just passes", ring(6, 3.15, 1.7), 1.4, 0});
+  p.push_back({"ring whose hole the probe just fails to pass", ring(6, 3.05, 1.7), 1.4, 0});
+  p.push_back({"ring whose probes above and below just overlap", ring(6, 2.79, 1.7), 1.4, 0});
+  p.push_back({"ring whose probes above and below just miss", ring(6, 2.75, 1.7), 1.4, 2});
+  // A regular tetrahedron of side 5: the probe cannot pass a face, but its positions inside
+  // (0.2 A from the centre, all four overlapping) and outside each face (1.64 A apart)
+  // overlap, so the excluded solid has a tunnel through each face into the middle: genus 3.
+  const double t = 5 / (2 * std::sqrt(2.0));
+  p.push_back({"four atoms whose reentrant patches overlap",
+               {atom_at({t, t, t}, 1.6), atom_at({t, -t, -t}, 1.6), atom_at({-t, t, -t}, 1.6), atom_at({-t, -t, t}, 1.6)},
+               1.4,
+               -4});
+  p.push_back({"a probe larger than the gaps between atoms", ring(5, 2.6, 1.5), 3.0, 2});
+  // A cage whose atoms leave no gap for the probe: a cavity inside (an outer shell and a
+  // cavity shell, 2 each).
+  p.push_back({"cage with a cavity", cage(48, 6.5, 1.8), 1.4, 4});
+  return p;
+}
+
+TEST(SolventExcludedSurface, DegeneratePlacementsAreValidAndMatchTheDistanceReference) {
+  for (const Placement& p : degenerate_placements()) {
+    SCOPED_TRACE(p.name);
+    const ComputedSurface s = ses_of(p.atoms, p.probe);
+    EXPECT_TRUE(s.check.valid());
+    EXPECT_EQ(s.check.euler_characteristic, p.euler);
+    EXPECT_EQ(s.check.contact_pairs, 0u);
+    const double reference = ses_reference::ExcludedSolid(p.atoms, p.probe).grid_volume(0.1);
+    EXPECT_LT(relative(s.measures.volume, reference), 0.005) << s.measures.volume << " vs " << reference;
+  }
+}
+
+TEST(SolventExcludedSurface, ACageKeepsItsCavityAsAnInwardComponentAndOuterOnlyDropsIt) {
+  const std::vector<Atom> atoms = cage(48, 6.5, 1.8);
+  const ComputedSurface all = ses_of(atoms);
+  std::size_t cavities = 0;
+  for (const auto& c : all.measures.components) cavities += c.cavity();
+  EXPECT_EQ(cavities, 1u);
+  ComputeSurfaceOptions options;
+  options.surface = SurfaceKind::ses;
+  options.outer_only = true;
+  const ComputedSurface outer = compute_surface(atoms, options);
+  ASSERT_EQ(outer.measures.components.size(), 1u);
+  EXPECT_FALSE(outer.measures.components[0].cavity());
+  EXPECT_GT(outer.measures.volume, all.measures.volume);  // the cavity's void is no longer taken out
+}
+
 TEST(SolventExcludedSurface, RefusesAProbeOfZeroAndAtomsOfRadiusZero) {
   EXPECT_THROW(ses_of({atom_at({0, 0, 0}, 1.5)}, 0.0), Error);
   EXPECT_THROW(ses_of({atom_at({0, 0, 0}, 1.5), atom_at({2, 0, 0}, 0.0)}), Error);

@@ -22,4 +22,12 @@ struct ActivePart {
 
 ActivePart active_part(const Mesh& solid, const BoundingBox& other_box);
 
+// Finer: only faces whose boxes overlap some face box of the other solid can meet it. A
+// passive face then lies wholly inside or wholly outside the other solid, which
+// passive_sides settles per connected run of passive faces, by one exact ray each.
+ActivePart active_part_near(const Mesh& solid, const Mesh& other);
+
+// Per passive face (in part.passive_faces' order): 1 if inside `other`, 0 if outside.
+std::vector<std::uint8_t> passive_sides(const Mesh& solid, const ActivePart& part, const Mesh& other);
+
 }  // namespace molsurf::boolean_engine

@@ -20,6 +20,14 @@
 
 namespace molsurf {
 
+namespace {
+
+// Above this many faces in the boxes' overlap, the finer cull (faces near the other
+// surface) pays for its tree and rays.
+constexpr std::size_t kNearCullFaces = 20000;
+
+}  // namespace
+
 const char* boolean_op_name(BooleanOp op) {
   switch (op) {
     case BooleanOp::union_: return "union";
@@ -183,9 +191,25 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   StepTimer timer;
 
   const std::array<BoundingBox, 2> boxes{bounding_box(a), bounding_box(b)};
-  const ActivePart part[2] = {active_part(a, boxes[1]), active_part(b, boxes[0])};
-  stats.active_faces = (part[0].whole ? a.faces.size() : part[0].mesh.faces.size()) +
-                       (part[1].whole ? b.faces.size() : part[1].mesh.faces.size());
+  ActivePart part[2] = {active_part(a, boxes[1]), active_part(b, boxes[0])};
+  auto active_count = [&] {
+    return (part[0].whole ? a.faces.size() : part[0].mesh.faces.size()) +
+           (part[1].whole ? b.faces.size() : part[1].mesh.faces.size());
+  };
+  // Per passive face, whether it lies inside the other solid; empty: every passive face is
+  // outside (beyond the other's box).
+  std::vector<std::uint8_t> passive_inside[2];
+  // Solids whose boxes overlap far more than their surfaces do (a surface and scattered
+  // local tools): only the faces near the other surface run the steps.
+  if (active_count() > kNearCullFaces && 4 * active_count() > a.faces.size() + b.faces.size()) {
+    part[0] = active_part_near(a, b);
+    part[1] = active_part_near(b, a);
+    if (!part[0].whole || !part[1].whole) {
+      passive_inside[0] = passive_sides(a, part[0], b);
+      passive_inside[1] = passive_sides(b, part[1], a);
+    }
+  }
+  stats.active_faces = active_count();
   stats.seconds.cull += timer.lap();
   if (part[0].whole && part[1].whole) {
     take_whole(result, run_steps(a, b, a, b, boxes, op, stats, timer));
@@ -215,12 +239,15 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
     const ActivePart& p = part[result.face_operand[k]];
     if (!p.whole) result.face_source[k] = p.face_origin[result.face_source[k]];
   }
-  const bool keep_passive[2] = {op != BooleanOp::intersection, op == BooleanOp::union_};
+  // What the operation does with a passive face: by its side of the other solid.
+  auto passive_keep = [&](int operand, std::size_t k) {
+    const bool inside = !passive_inside[operand].empty() && passive_inside[operand][k] != 0;
+    return select_sub_face(op, operand, inside ? Side::inside : Side::outside);
+  };
   constexpr std::uint32_t unmapped = ~std::uint32_t{0};
   std::vector<std::uint32_t> out_vertex[2];
   for (int operand = 0; operand < 2; ++operand)
-    if (keep_passive[operand] && !part[operand].passive_faces.empty())
-      out_vertex[operand].assign(solid[operand]->vertices.size(), unmapped);
+    if (!part[operand].passive_faces.empty()) out_vertex[operand].assign(solid[operand]->vertices.size(), unmapped);
   const auto part_vertices_a =
       static_cast<std::uint32_t>(part[0].whole ? a.vertices.size() : part[0].mesh.vertices.size());
   for (std::uint32_t v = 0; v < stitched.vertex_point.size(); ++v) {
@@ -234,10 +261,13 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   const bool tagged = a.has_tags() || b.has_tags();
   if (tagged && out.face_tags.size() != out.faces.size()) out.face_tags.resize(out.faces.size(), kNoTag);
   for (int operand = 0; operand < 2; ++operand) {
-    if (!keep_passive[operand]) continue;
     const Mesh& m = *solid[operand];
-    for (std::uint32_t f : part[operand].passive_faces) {
+    for (std::size_t k = 0; k < part[operand].passive_faces.size(); ++k) {
+      const Keep keep = passive_keep(operand, k);
+      if (keep == Keep::drop) continue;
+      const std::uint32_t f = part[operand].passive_faces[k];
       Triangle t = m.faces[f];
+      if (keep == Keep::keep_flipped) std::swap(t[1], t[2]);
       for (Index& v : t) {
         std::uint32_t& mapped = out_vertex[operand][v];
         if (mapped == unmapped) {

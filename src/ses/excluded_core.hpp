@@ -1,16 +1,25 @@
 #pragma once
-// The solvent-accessible solid with every atom's exposed shell taken away: what is left of
-// the SAS solid once the probe has been swept over the inside of each exposed face (the
-// third family of the probe's sweep; the other two, around arcs and at vertices, are
-// probe_sweep.hpp). Each atom's exposed faces, scaled about the atom's centre by
-// r_vdW / (r_vdW + probe), become its contact patch on the van der Waals sphere; along every
-// seam between two atoms' faces, each side gets a wall in the plane through its atom's
-// centre, from the scaled edge up to the seam. The walls of the two atoms meet at the seam:
-// a ridge whose part within a probe radius of the seam the probe sweep removes, leaving the
-// reentrant fill. Built face by face from the SAS mesh, no Boolean: closed and 2-manifold by
-// construction (a vertex where one atom's faces meet only at a point gets one copy per fan).
+// The solvent-excluded surface drawn from the solvent-accessible surface's mesh, face by
+// face, with no Boolean: the inner parallel surface of the SAS at the probe radius.
+//  - each atom's SAS faces, scaled about the atom's centre by r_vdW / (r_vdW + probe),
+//    become its contact patch on the van der Waals sphere (one copy of a SAS vertex per fan
+//    of one atom's faces around it);
+//  - each seam edge between two atoms' faces becomes a strip between the profiles at its two
+//    ends, and each SAS vertex where three or more atoms meet a patch closing its profiles.
+// A SAS vertex is `rolled` or a `ridge`:
+//  - rolled: its profile between two atoms is the probe's meridian arc (the probe centred at
+//    the vertex, from one contact point to the other), and where three or more atoms meet,
+//    a reentrant patch on the probe sphere closes them. Rolled everywhere, the surface is the
+//    SES itself wherever the SES has no singularity; where it has (probes that overlap, a
+//    spindle torus), the surface crosses itself;
+//  - ridge: its profile runs from one contact point up to the SAS vertex and down to the
+//    other. Around ridge vertices the surface bounds the SAS solid minus the probe's sweep
+//    over the faces' insides: the core that the union of probe balls then carves exactly.
+// Closed, oriented and 2-manifold by construction whatever the modes.
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
@@ -18,12 +27,19 @@
 namespace molsurf::ses_detail {
 
 struct ExcludedCore {
-  Mesh mesh;                  // face tags: atom index
-  std::size_t wall_faces = 0;
+  Mesh mesh;  // face tags: atom index (the nearest of the atoms a strip or patch joins)
+  // Per face, the SAS vertex it was drawn for (a strip: its seam edge's tail; a patch: its
+  // vertex), or -1 for a contact face.
+  std::vector<std::int64_t> face_vertex;
+  std::vector<std::int64_t> face_vertex_other;  // a strip's seam edge head; -1 otherwise
+  std::size_t strip_faces = 0, patch_faces = 0;
   std::size_t pinched_vertices = 0;  // SAS vertices where one atom's faces form several fans
 };
 
-// `sas`: the solvent-accessible surface at probe radius `probe`, its face tags atom indices.
-ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, double probe);
+// `sas`: the solvent-accessible surface at probe radius `probe`, its face tags atom
+// indices. `ridge`: per SAS vertex, 1 for a ridge vertex (empty: every vertex rolled).
+// `arc_spacing`: the longest segment of a meridian arc, angstrom.
+ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, double probe,
+                           std::span<const std::uint8_t> ridge, double arc_spacing);
 
 }  // namespace molsurf::ses_detail

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <tuple>
 
 namespace molsurf::ses_detail {
 
@@ -18,6 +20,28 @@ Vec3 rotated(const Vec3& v, const Vec3& n, double angle) {
 
 std::vector<ProbeCentre> probe_sweep(const SphereArrangement& arrangement, const std::vector<Vec3>& centres,
                                      const std::vector<double>& radii, double spacing) {
+  // Spheres by cell of a grid as wide as the largest sphere's diameter.
+  double cell = 0;
+  for (double r : radii) cell = std::max(cell, 2 * r);
+  if (!(cell > 0)) cell = 1;
+  auto key = [cell](const Vec3& p) {
+    return std::tuple<long, long, long>{static_cast<long>(std::floor(p.x / cell)), static_cast<long>(std::floor(p.y / cell)),
+                                        static_cast<long>(std::floor(p.z / cell))};
+  };
+  std::map<std::tuple<long, long, long>, std::vector<std::uint32_t>> grid;
+  for (std::uint32_t i = 0; i < centres.size(); ++i) grid[key(centres[i])].push_back(i);
+  auto held_by_another = [&](const Vec3& c, std::uint32_t a, std::uint32_t b) {
+    const auto [x, y, z] = key(c);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({x + dx, y + dy, z + dz});
+          if (it == grid.end()) continue;
+          for (std::uint32_t k : it->second)
+            if (k != a && k != b && norm(c - centres[k]) < radii[k] * (1 - 1e-9)) return true;
+        }
+    return false;
+  };
   std::vector<ProbeCentre> out;
   out.reserve(arrangement.vertices.size() * 4);
   for (const ArrangementVertex& v : arrangement.vertices) out.push_back({v.point, v.spheres});
@@ -49,11 +73,20 @@ std::vector<ProbeCentre> probe_sweep(const SphereArrangement& arrangement, const
     // The exposed side lies on the arc's left seen from outside `sphere`: the arc turns
     // clockwise about n, the axis from `sphere` towards `other`.
     const Vec3 radial = start - o;
+    // The arc turns clockwise about n; where it ends at its `to` vertex the other way round
+    // (rounding of a nearly whole turn), that way. A point that another ball holds is no
+    // probe position: it is left out.
+    double turn = -1;
+    if (arc.to >= 0) {
+      const Vec3 end = arrangement.vertices[static_cast<std::size_t>(arc.to)].point;
+      if (norm(o + rotated(radial, n, sweep) - end) < norm(o + rotated(radial, n, -sweep) - end)) turn = 1;
+    }
     // A whole circle gets points all round; an arc only between its end vertices.
     const std::size_t first = arc.from < 0 ? 0 : 1;
     for (std::size_t k = first; k < segments; ++k) {
-      const double angle = -sweep * static_cast<double>(k) / static_cast<double>(segments);
-      out.push_back({o + rotated(radial, n, angle), {arc.sphere, arc.other, arc.other}});
+      const double angle = turn * sweep * static_cast<double>(k) / static_cast<double>(segments);
+      const Vec3 c = o + rotated(radial, n, angle);
+      if (!held_by_another(c, arc.sphere, arc.other)) out.push_back({c, {arc.sphere, arc.other, arc.other}});
     }
   }
   return out;

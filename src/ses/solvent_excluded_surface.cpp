@@ -1,16 +1,20 @@
 #include "ses/solvent_excluded_surface.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "molsurf/boolean.hpp"
+#include "molsurf/cleanup.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/mesh_check.hpp"
 #include "ses/excluded_core.hpp"
 #include "ses/probe_sweep.hpp"
 
@@ -37,37 +41,107 @@ std::int32_t nearest_touched_atom(const ProbeCentre& probe, std::span<const Atom
   return best;
 }
 
-}  // namespace
+using Cell = std::tuple<long, long, long>;
 
-double probe_spacing(double density) { return 0.5 / std::sqrt(density); }
+Cell cell_of(const Vec3& p, double size) {
+  return {static_cast<long>(std::floor(p.x / size)), static_cast<long>(std::floor(p.y / size)),
+          static_cast<long>(std::floor(p.z / size))};
+}
 
-ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads) {
-  ExcludedSurface out;
-  if (!(spheres.probe > 0)) throw Error("the solvent-excluded surface needs a probe radius above 0 (at 0 it is the van der Waals surface: --surface vdw)");
-  for (std::size_t i = 0; i < atoms.size(); ++i)
-    if (!(atoms[i].radius > 0))
-      throw Error("atom " + std::to_string(i) + ": radius 0; the solvent-excluded surface needs every atom's radius above 0");
-  if (atoms.empty()) return out;
+// Points by cell of a grid: whether any lies within `reach` of a query point.
+class NearPoints {
+ public:
+  NearPoints(const std::vector<Vec3>& points, double reach) : reach_(reach) {
+    for (const Vec3& p : points) grid_[cell_of(p, reach)].push_back(p);
+  }
+  bool near(const Vec3& q) const {
+    const auto [x, y, z] = cell_of(q, reach_);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = grid_.find({x + dx, y + dy, z + dz});
+          if (it == grid_.end()) continue;
+          for (const Vec3& p : it->second)
+            if (norm(p - q) <= reach_) return true;
+        }
+    return false;
+  }
 
+ private:
+  double reach_;
+  std::map<Cell, std::vector<Vec3>> grid_;
+};
+
+// The SAS vertices whose drawn faces the check found at fault (crossing or touching another
+// face, degenerate), and every SAS vertex within `reach` of one: made ridges.
+std::size_t mark_ridges(const ExcludedCore& core, const MeshCheck& check, const Mesh& sas, double reach,
+                        std::vector<std::uint8_t>& ridge) {
+  std::vector<Vec3> seeds;
+  for (const auto* list : {&check.examples_intersecting, &check.examples_contact, &check.examples_degenerate,
+                           &check.examples_nonmanifold_vertex, &check.examples_nonmanifold_edge,
+                           &check.examples_boundary, &check.examples_misoriented})
+    for (std::size_t f : *list) {
+      if (f >= core.face_vertex.size()) continue;
+      for (std::int64_t v : {core.face_vertex[f], core.face_vertex_other[f]})
+        if (v >= 0 && !ridge[static_cast<std::size_t>(v)]) seeds.push_back(sas.vertices[static_cast<std::size_t>(v)]);
+    }
+  if (seeds.empty()) return 0;
+  const NearPoints near(seeds, reach);
+  std::size_t marked = 0;
+  for (Index v = 0; v < sas.vertex_count(); ++v)
+    if (!ridge[v] && near.near(sas.vertices[v])) {
+      ridge[v] = 1;
+      ++marked;
+    }
+  return marked;
+}
+
+MeshCheck check_all(const Mesh& mesh) {
+  MeshCheckOptions options;
+  options.max_examples = std::numeric_limits<std::size_t>::max();
+  return check_mesh(mesh, options);
+}
+
+// The rolled surface, with ridges where it is singular, until it is a valid operand whose
+// rolled parts touch nothing. Rounds widen the ridges around what is still at fault; the
+// last makes every vertex a ridge.
+ExcludedCore valid_core(const Mesh& sas, std::span<const Atom> atoms, const SphereOptions& spheres,
+                        std::vector<std::uint8_t>& ridge, ExcludedSurfaceStats& stats) {
+  const double probe = spheres.probe;
+  ExcludedCore core = excluded_core(sas, atoms, probe, ridge, arc_spacing(spheres.density));
+  stats.rolled_faces = core.mesh.face_count();
+  for (int round = 0;; ++round) {
+    const MeshCheck check = check_all(core.mesh);
+    bool rolled_contact = false;
+    for (std::size_t f : check.examples_contact)
+      rolled_contact |= core.face_vertex[f] >= 0 && !ridge[static_cast<std::size_t>(core.face_vertex[f])];
+    if (check.valid() && !rolled_contact) break;
+    if (round == 0) stats.singular_faces = check.examples_intersecting.size() + check.examples_contact.size();
+    if (round == 4) {
+      if (!check.valid()) throw std::logic_error("the ridged core failed its check");
+      break;
+    }
+    if (round == 3)
+      std::fill(ridge.begin(), ridge.end(), std::uint8_t{1});
+    else
+      mark_ridges(core, check, sas, 0.3 * probe * (1 + round), ridge);
+    core = excluded_core(sas, atoms, probe, ridge, arc_spacing(spheres.density));
+  }
+  stats.ridge_vertices = static_cast<std::size_t>(std::count(ridge.begin(), ridge.end(), std::uint8_t{1}));
+  return core;
+}
+
+// One attempt from one SAS mesh: the core, and where it has ridges, the probe balls near
+// them taken away.
+Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOptions& spheres,
+                   const SphereArrangement& arrangement, int threads, ExcludedSurfaceStats& stats) {
   auto clock = std::chrono::steady_clock::now();
-  SurfaceOptions sas_options;
-  sas_options.spheres = spheres;
-  sas_options.threads = threads;
-  SurfaceResult sas = solvent_accessible_surface(atoms, sas_options);
-  if (!sas.fallback.empty()) throw Error("solvent-excluded surface: " + sas.fallback);
-  out.stats.sas_faces = sas.mesh.face_count();
-  out.stats.seconds_sas = seconds_since(clock);
-
-  clock = std::chrono::steady_clock::now();
-  out.arrangement = compute_areas(atoms, spheres, threads).arrangement;
-  out.stats.seconds_arrangement = seconds_since(clock);
-
-  clock = std::chrono::steady_clock::now();
-  ExcludedCore core = excluded_core(sas.mesh, atoms, spheres.probe);
-  sas.mesh = Mesh{};
-  out.stats.core_faces = core.mesh.face_count();
-  out.stats.pinched_vertices = core.pinched_vertices;
-  out.stats.seconds_core = seconds_since(clock);
+  std::vector<std::uint8_t> ridge(sas.vertex_count(), 0);
+  ExcludedCore core = valid_core(sas, atoms, spheres, ridge, stats);
+  stats.core_faces = core.mesh.face_count();
+  stats.pinched_vertices = core.pinched_vertices;
+  stats.seconds_core = seconds_since(clock);
+  if (stats.ridge_vertices == 0) return std::move(core.mesh);
 
   clock = std::chrono::steady_clock::now();
   std::vector<Vec3> centres(atoms.size());
@@ -76,8 +150,14 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
     centres[i] = atoms[i].centre;
     radii[i] = sphere_radius(atoms[i], spheres);
   }
-  const std::vector<ProbeCentre> probes = probe_sweep(out.arrangement, centres, radii, probe_spacing(spheres.density));
-  out.stats.probes = probes.size();
+  std::vector<ProbeCentre> probes = probe_sweep(arrangement, centres, radii, probe_spacing(spheres.density));
+  // The balls that reach a ridge: centres within two probe radii of a ridge vertex.
+  std::vector<Vec3> ridge_points;
+  for (Index v = 0; v < ridge.size(); ++v)
+    if (ridge[v]) ridge_points.push_back(sas.vertices[v]);
+  const NearPoints near_ridge(ridge_points, 2 * spheres.probe);
+  std::erase_if(probes, [&](const ProbeCentre& p) { return !near_ridge.near(p.centre); });
+  stats.probes = probes.size();
   std::vector<Atom> balls(probes.size());
   for (std::size_t k = 0; k < probes.size(); ++k) {
     balls[k].centre = probes[k].centre;
@@ -88,13 +168,13 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
   sweep_options.spheres.probe = 0;
   sweep_options.threads = threads;
   SurfaceResult sweep = solvent_accessible_surface(balls, sweep_options);
-  if (!sweep.fallback.empty()) throw Error("solvent-excluded surface: " + sweep.fallback);
-  out.stats.sweep_faces = sweep.mesh.face_count();
-  out.stats.seconds_sweep = seconds_since(clock);
+  if (!sweep.fallback.empty()) throw std::logic_error(sweep.fallback);
+  stats.sweep_faces = sweep.mesh.face_count();
+  stats.seconds_sweep = seconds_since(clock);
 
   clock = std::chrono::steady_clock::now();
   BooleanResult ses = boolean(core.mesh, sweep.mesh, BooleanOp::difference);
-  out.stats.seconds_difference = seconds_since(clock);
+  stats.seconds_difference = seconds_since(clock);
   Mesh& mesh = ses.mesh;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     if (ses.face_operand[f] == 0) continue;  // from the core: already an atom
@@ -103,13 +183,55 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
     const Vec3 centroid = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
     mesh.face_tags[f] = nearest_touched_atom(probe, atoms, centroid);
   }
-  out.mesh = std::move(mesh);
-  if (std::getenv("MOLSURF_SES_DEBUG"))
-    std::fprintf(stderr, "ses: sas %zu faces %.2fs, arrangement %.2fs, core %zu faces %.2fs (pinched %zu), %zu probes -> sweep %zu faces %.2fs, difference %.2fs -> %zu faces\n",
-                 out.stats.sas_faces, out.stats.seconds_sas, out.stats.seconds_arrangement, out.stats.core_faces,
-                 out.stats.seconds_core, out.stats.pinched_vertices, out.stats.probes, out.stats.sweep_faces,
-                 out.stats.seconds_sweep, out.stats.seconds_difference, out.mesh.face_count());
-  return out;
+  return std::move(mesh);
+}
+
+}  // namespace
+
+double probe_spacing(double density) { return 1.0 / std::sqrt(density); }
+
+double arc_spacing(double density) { return 0.7 / std::sqrt(density); }
+
+ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads) {
+  ExcludedSurface out;
+  if (!(spheres.probe > 0))
+    throw Error("the solvent-excluded surface needs a probe radius above 0 (at 0 it is the van der Waals surface: "
+                "--surface vdw)");
+  for (std::size_t i = 0; i < atoms.size(); ++i)
+    if (!(atoms[i].radius > 0))
+      throw Error("atom " + std::to_string(i) +
+                  ": radius 0; the solvent-excluded surface needs every atom's radius above 0");
+  if (atoms.empty()) return out;
+
+  auto clock = std::chrono::steady_clock::now();
+  SurfaceOptions sas_options;
+  sas_options.spheres = spheres;
+  sas_options.threads = threads;
+  SurfaceResult sas = solvent_accessible_surface(atoms, sas_options);
+  if (!sas.fallback.empty()) throw Error("solvent-excluded surface: " + sas.fallback);
+  out.stats.sas_faces = sas.mesh.face_count();
+  out.stats.seconds_sas = seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
+  out.arrangement = compute_areas(atoms, spheres, threads).arrangement;
+  out.stats.seconds_arrangement = seconds_since(clock);
+
+  // First from the SAS without its slivers (tiny faces and short seams give strips and
+  // contact faces that rounding folds or collapses); where the engine cannot finish that
+  // one, from the SAS as the union left it.
+  Mesh cleaned = sas.mesh;
+  improve_surface(cleaned);
+  std::string failures;
+  for (const Mesh* from : {&cleaned, &sas.mesh}) {
+    try {
+      out.mesh = excluded_from(*from, atoms, spheres, out.arrangement, threads, out.stats);
+      out.stats.attempts += 1;
+      return out;
+    } catch (const std::logic_error& failure) {
+      out.stats.attempts += 1;
+      failures += std::string(failures.empty() ? "" : "; ") + failure.what();
+    }
+  }
+  throw Error("solvent-excluded surface: not computed (" + failures + "; a molsurf bug, please report it)");
 }
 
 }  // namespace molsurf::ses_detail

@@ -20,8 +20,10 @@
 namespace molsurf::ses_detail {
 
 struct ExcludedSurfaceStats {
-  std::size_t sas_faces = 0, core_faces = 0, probes = 0, sweep_faces = 0;
-  std::size_t pinched_vertices = 0;
+  std::size_t sas_faces = 0, rolled_faces = 0, core_faces = 0, probes = 0, sweep_faces = 0;
+  std::size_t singular_faces = 0;  // rolled faces crossing or touching another (the SES's singularities)
+  std::size_t pinched_vertices = 0, ridge_vertices = 0;
+  int attempts = 0;  // SAS meshes tried: the cleaned one, then (if the engine stopped) the union's own
   double seconds_sas = 0, seconds_arrangement = 0, seconds_core = 0, seconds_sweep = 0, seconds_difference = 0;
 };
 
@@ -36,5 +38,7 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
 
 // The spacing of probe centres along an arc at this density (vertices per square angstrom).
 double probe_spacing(double density);
+// The longest segment of a meridian arc at this density.
+double arc_spacing(double density);
 
 }  // namespace molsurf::ses_detail
