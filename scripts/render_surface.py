@@ -3,6 +3,7 @@
 
 Usage (from the project root, after scripts/setup.sh):
     xvfb-run -a /usr/bin/python3 scripts/render_surface.py data/pdb/2hhb.pdb docs/images/2hhb_chains.png
+    xvfb-run -a /usr/bin/python3 scripts/render_surface.py --surface ses data/pdb/1crn.pdb docs/images/1crn_ses.png
 
 The surface is computed by the molsurf module with the command line's defaults; each face takes the
 colour of its atom's chain, so the picture shows which chain owns which part of the surface.
@@ -77,10 +78,12 @@ def main():
     parser.add_argument("structure", help="PDB, mmCIF, PQR or .xyzr file")
     parser.add_argument("png", help="picture to write")
     parser.add_argument("--probe", type=float, default=1.4, help="probe radius, Å (default 1.4)")
+    parser.add_argument("--surface", choices=("sas", "ses", "vdw"), default="sas",
+                        help="which surface (default sas; ses: solvent excluded)")
     args = parser.parse_args()
 
     structure = molsurf.read_structure(args.structure)
-    surface = molsurf.surface(structure, probe=args.probe)
+    surface = molsurf.surface(structure, probe=args.probe, surface=args.surface)
     chains = np.asarray(structure.chains)
     names, chain_index = np.unique(chains, return_inverse=True)
     face_chain = chain_index[np.asarray(surface.atom_of_face)]

@@ -1,0 +1,44 @@
+// The solvent-excluded surface over the real structures of data/pdb up to a few thousand
+// atoms, at densities 1, 2 and 4 and probes 1.0, 1.4 and 2.0: valid every time (closed,
+// 2-manifold, outward, no self-intersection, no touching faces), and its volume between the
+// van der Waals solid's and the accessible solid's. Label `long`.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "molsurf/atoms.hpp"
+#include "molsurf/compute_surface.hpp"
+
+namespace molsurf {
+namespace {
+
+TEST(SolventExcludedSurfaceLong, ValidOnEveryStructureDensityAndProbe) {
+  for (const char* file : {"1crn.pdb", "1ubq.pdb", "1j8k.cif", "3pqr.cif", "2hhb.pdb"}) {
+    const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/" + file);
+    ComputeSurfaceOptions vdw_options;
+    vdw_options.exact_areas = false;
+    vdw_options.surface = SurfaceKind::vdw;
+    const double vdw_volume = compute_surface(s.atoms, vdw_options).measures.volume;
+    for (const double probe : {1.0, 1.4, 2.0})
+      for (const double density : {1.0, 2.0, 4.0}) {
+        SCOPED_TRACE(testing::Message() << file << " probe " << probe << " density " << density);
+        ComputeSurfaceOptions options;
+        options.exact_areas = false;
+        options.surface = SurfaceKind::ses;
+        options.spheres.probe = probe;
+        options.spheres.density = density;
+        const ComputedSurface ses = compute_surface(s.atoms, options);
+        EXPECT_TRUE(ses.check.valid());
+        EXPECT_EQ(ses.check.contact_pairs, 0u);
+        options.surface = SurfaceKind::sas;
+        options.spheres.density = 1;
+        const double sas_volume = compute_surface(s.atoms, options).measures.volume;
+        EXPECT_GT(ses.measures.volume, vdw_volume);
+        EXPECT_LT(ses.measures.volume, sas_volume);
+      }
+  }
+}
+
+}  // namespace
+}  // namespace molsurf
