@@ -67,6 +67,7 @@ struct SurfaceData {
   molsurf::ComputedSurface computed;
   std::shared_ptr<const molsurf::Structure> structure;  // the atoms the face tags index
   molsurf::SphereOptions spheres;
+  molsurf::SurfaceKind kind = molsurf::SurfaceKind::sas;
   // The true spheres' numbers as the command reports them (make_exact_report, with
   // outer_only respected); computed.measures holds the facets'.
   molsurf::ExactReport exact;
@@ -365,6 +366,7 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
   options.max_sphere_faces = max_faces;
   options.source = data->structure->report.file;
   data->spheres = options.spheres;
+  data->kind = options.surface;
   // Ctrl-C: the library reports progress at least at the start and end of every stage;
   // where that happens outside a parallel region (so an exception may leave it), a pending
   // KeyboardInterrupt is raised there, ending the computation at the next stage boundary.
@@ -609,6 +611,7 @@ std::vector<std::filesystem::path> write_surface(const SurfaceData& d, const std
   options.msms_header = msms_header;
   options.probe_radius = d.spheres.probe;
   options.density = d.spheres.density;
+  options.faces_on_atom_spheres = d.kind != molsurf::SurfaceKind::ses;
   molsurf::MeshCheckOptions check_options;
   check_options.self_intersections = d.computed.check.self_intersections_checked;
   // Lossy formats (.vert, .stl): the surface is checked as the file will hold it, as the

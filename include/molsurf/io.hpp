@@ -37,6 +37,10 @@ struct MeshWriteOptions {
   // Readers of .vert (MSMS tools, PyGBe, TABI-PB, MaSIF) split on whitespace, so wider
   // columns are read correctly (docs/formats.md).
   int msms_decimals = 3;
+  // Every face lies on its atom's sphere (the SAS and vdW surfaces): MSMS normals are then
+  // the spheres' own inside a patch. False for the SES, whose toroidal and reentrant faces
+  // lie on no atom's sphere: normals are the faces' area-weighted means there too.
+  bool faces_on_atom_spheres = true;
   double probe_radius = 1.4;   // recorded in MSMS headers
   double density = 2.0;        // recorded in MSMS headers
   int threads = 0;             // for the parallel parts (.vtp's compression); 0: OpenMP's default

@@ -379,6 +379,7 @@ MeshWriteOptions surface_write_options(const SurfaceCommand& command, std::span<
   options.msms_header = !command.no_header;
   options.msms_atom_names = !command.no_header;
   const bool vdw = command.surface == "vdw" || command.spheres.probe == 0;
+  options.faces_on_atom_spheres = command.surface != "ses";
   options.surface_description = std::string(vdw                         ? "van der Waals surface"
                                             : command.surface == "ses" ? "solvent excluded surface"
                                                                        : "solvent accessible surface") +

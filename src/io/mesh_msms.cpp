@@ -164,8 +164,11 @@ std::string header_comment(const char* what, const MeshWriteOptions& options) {
   std::string description = options.surface_description.empty() ? "surface" : options.surface_description;
   for (char& c : description)
     if (c == '\n' || c == '\r') c = ' ';
-  return std::string("# MSMS-format ") + what + " of the " + description + " (molsurf " MOLSURF_VERSION +
-         (options.atoms.empty() ? ")\n" : ": a union of atom spheres, every face a contact face)\n");
+  const char* faces = options.atoms.empty()               ? ")\n"
+                      : options.faces_on_atom_spheres ? ": a union of atom spheres, every face a contact face)\n"
+                                                      : ": type 3 on every face; contact, toric and reentrant faces "
+                                                        "not told apart)\n";
+  return std::string("# MSMS-format ") + what + " of the " + description + " (molsurf " MOLSURF_VERSION + faces;
 }
 
 std::size_t sphere_count(const Mesh& mesh, std::span<const Atom> atoms) {
@@ -249,7 +252,8 @@ void for_each_row(const path& file, std::string text, const char* what, OnRow on
 void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const PairPaths paths = pair_paths(file);
   const std::vector<VertexPatches> patches = vertex_patches(mesh);
-  const std::vector<Vec3> normals = msms_normals(mesh, options.atoms, patches);
+  const std::vector<Vec3> normals =
+      options.faces_on_atom_spheres ? msms_normals(mesh, options.atoms, patches) : vertex_normals(mesh);
   const std::vector<long long> analytical = analytical_numbers(patches);
   const std::vector<long long> closest = closest_spheres(mesh, options.atoms);
   const std::size_t spheres = sphere_count(mesh, options.atoms);
