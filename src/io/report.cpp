@@ -65,7 +65,12 @@ std::string format_read_report(const ReadReport& r) {
     if (n > 0) dropped.push_back(std::to_string(n) + " " + why);
   };
   drop(r.dropped_water, "water (--keep-water keeps them)");
-  drop(r.dropped_hydrogen, "hydrogen/deuterium (--hydrogens keeps them)");
+  // A PQR's hydrogens carry charges: a surface without them leaves those charges outside,
+  // which an electrostatics solver on the surface does not expect.
+  drop(r.dropped_hydrogen, r.format == StructureFormat::pqr
+                               ? "hydrogen/deuterium (--hydrogens keeps them; their charges lie outside a surface "
+                                 "made without them: keep them for electrostatics)"
+                               : "hydrogen/deuterium (--hydrogens keeps them)");
   drop(r.dropped_altloc, "alternate conformers (one kept per atom)");
   drop(r.dropped_hetatm, "hetero atoms (--no-hetatm)");
   drop(r.dropped_chain, "in other chains (--chains)");
