@@ -4,6 +4,7 @@
 // van der Waals solid's and the accessible solid's. Label `long`.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ TEST(SolventExcludedSurfaceLong, ValidOnEveryStructureDensityAndProbe) {
         options.spheres.probe = probe;
         options.spheres.density = density;
         const ComputedSurface ses = compute_surface(s.atoms, options);
+        std::printf("%s probe %.1f density %.0f: %zu faces, %.2f s, %s\n", file, probe, density, ses.measures.faces,
+                    ses.seconds.total, ses.check.valid() ? "valid" : "INVALID");
+        std::fflush(stdout);
         EXPECT_TRUE(ses.check.valid());
         EXPECT_EQ(ses.check.contact_pairs, 0u);
         options.surface = SurfaceKind::sas;

@@ -121,10 +121,12 @@ ExcludedCore valid_core(const Mesh& sas, std::span<const Atom> atoms, const Sphe
       if (!check.valid()) throw std::logic_error("the ridged core failed its check");
       break;
     }
-    if (round == 3)
+    // Nothing new to make a ridge (the faults lie in ridges and contact faces already):
+    // straight to every vertex a ridge.
+    if (round == 3 || mark_ridges(core, check, sas, 0.3 * probe * (1 + round), ridge) == 0) {
       std::fill(ridge.begin(), ridge.end(), std::uint8_t{1});
-    else
-      mark_ridges(core, check, sas, 0.3 * probe * (1 + round), ridge);
+      round = 3;
+    }
     core = excluded_core(sas, atoms, probe, ridge, arc_spacing(spheres.density));
   }
   stats.ridge_vertices = static_cast<std::size_t>(std::count(ridge.begin(), ridge.end(), std::uint8_t{1}));
@@ -217,15 +219,14 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
   out.arrangement = compute_areas(atoms, spheres, threads).arrangement;
   out.stats.seconds_arrangement = seconds_since(clock);
 
-  // First from the SAS without its slivers (tiny faces and short seams give strips and
-  // contact faces that rounding folds or collapses); where the engine cannot finish that
-  // one, from the SAS as the union left it.
-  Mesh cleaned = sas.mesh;
-  improve_surface(cleaned);
+  // First from the SAS as the union left it; where that cannot be finished (its tiny faces
+  // and short seams can give contact faces that rounding collapses), from the SAS without
+  // its slivers.
   std::string failures;
-  for (const Mesh* from : {&cleaned, &sas.mesh}) {
+  for (int attempt = 0; attempt < 2; ++attempt) {
     try {
-      out.mesh = excluded_from(*from, atoms, spheres, out.arrangement, threads, out.stats);
+      if (attempt == 1) improve_surface(sas.mesh);
+      out.mesh = excluded_from(sas.mesh, atoms, spheres, out.arrangement, threads, out.stats);
       out.stats.attempts += 1;
       return out;
     } catch (const std::logic_error& failure) {
