@@ -17,15 +17,10 @@
 #include "ses_reference.hpp"
 
 using namespace molsurf;
+using ses_reference::atom_at;
+using ses_reference::ring;
 
 namespace {
-
-Atom atom_at(Vec3 c, double r) {
-  Atom a;
-  a.centre = c;
-  a.radius = r;
-  return a;
-}
 
 struct Case {
   std::string name;
@@ -33,15 +28,6 @@ struct Case {
   double probe = 1.4;
   double exact_area = 0, exact_volume = 0;  // 0: the grid reference's volume only
 };
-
-std::vector<Atom> ring(int n, double radius, double r) {
-  std::vector<Atom> atoms;
-  for (int k = 0; k < n; ++k) {
-    const double a = 2 * std::numbers::pi * k / n;
-    atoms.push_back(atom_at({radius * std::cos(a), radius * std::sin(a), 0}, r));
-  }
-  return atoms;
-}
 
 }  // namespace
 

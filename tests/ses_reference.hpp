@@ -22,6 +22,35 @@
 
 namespace molsurf::ses_reference {
 
+// Placements the SES tests and its accuracy bench share.
+inline Atom atom_at(Vec3 centre, double radius) {
+  Atom a;
+  a.centre = centre;
+  a.radius = radius;
+  a.element = "C";
+  return a;
+}
+
+// n atoms evenly on a circle in the z = 0 plane.
+inline std::vector<Atom> ring(int n, double radius, double atom_radius) {
+  std::vector<Atom> atoms;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    atoms.push_back(atom_at({radius * std::cos(a), radius * std::sin(a), 0}, atom_radius));
+  }
+  return atoms;
+}
+
+// n atoms spread evenly on a sphere (a golden-angle spiral): a cage with a void inside.
+inline std::vector<Atom> cage(int n, double radius, double atom_radius) {
+  std::vector<Atom> atoms;
+  for (int k = 0; k < n; ++k) {
+    const double z = 1 - (2.0 * k + 1) / n, r = std::sqrt(1 - z * z), a = k * std::numbers::pi * (3 - std::sqrt(5.0));
+    atoms.push_back(atom_at({radius * r * std::cos(a), radius * r * std::sin(a), radius * z}, atom_radius));
+  }
+  return atoms;
+}
+
 struct AreaVolume {
   double area = 0, volume = 0;
 };

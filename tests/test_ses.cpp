@@ -14,13 +14,9 @@
 namespace molsurf {
 namespace {
 
-Atom atom_at(Vec3 centre, double radius) {
-  Atom a;
-  a.centre = centre;
-  a.radius = radius;
-  a.element = "C";
-  return a;
-}
+using ses_reference::atom_at;
+using ses_reference::cage;
+using ses_reference::ring;
 
 ComputedSurface ses_of(const std::vector<Atom>& atoms, double probe = 1.4, double density = 2) {
   ComputeSurfaceOptions options;
@@ -109,25 +105,6 @@ struct Placement {
   double probe = 1.4;
   long euler = 2;  // of the whole surface: 2 per sphere-like shell, 0 per torus-like one
 };
-
-std::vector<Atom> ring(int n, double radius, double atom_radius) {
-  std::vector<Atom> atoms;
-  for (int k = 0; k < n; ++k) {
-    const double a = 2 * std::numbers::pi * k / n;
-    atoms.push_back(atom_at({radius * std::cos(a), radius * std::sin(a), 0}, atom_radius));
-  }
-  return atoms;
-}
-
-// Atoms spread evenly on a sphere (a golden-angle spiral): a cage with a void inside.
-std::vector<Atom> cage(int n, double radius, double atom_radius) {
-  std::vector<Atom> atoms;
-  for (int k = 0; k < n; ++k) {
-    const double z = 1 - (2.0 * k + 1) / n, r = std::sqrt(1 - z * z), a = k * std::numbers::pi * (3 - std::sqrt(5.0));
-    atoms.push_back(atom_at({radius * r * std::cos(a), radius * r * std::sin(a), radius * z}, atom_radius));
-  }
-  return atoms;
-}
 
 std::vector<Placement> degenerate_placements() {
   const double s = 5.0 / std::sqrt(3.0);  // a triangle of side 5: the probes above and below overlap
