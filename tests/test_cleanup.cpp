@@ -434,3 +434,24 @@ TEST(Cleanup, CollapsesEdgesFarShorterThanTheMedian) {
 
 }  // namespace
 }  // namespace molsurf
+
+namespace molsurf {
+namespace {
+
+// An absolute floor, for a surface whose median edge is itself far below what its density
+// asks: edges under it are collapsed as the median's fraction would, and the surface stays valid.
+TEST(Cleanup, CollapsesEdgesUnderAnAbsoluteLength) {
+  const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
+  Mesh mesh = solvent_accessible_surface(s.atoms, {}).mesh;
+  const double area = surface_area(mesh);
+  CleanupOptions options;
+  options.min_edge_length = 0.3;
+  const CleanupStats stats = improve_surface(mesh, options);
+  EXPECT_GT(stats.short_edges_before, stats.short_edges_after);
+  const MeshCheck check = check_mesh(mesh);
+  EXPECT_TRUE(check.valid());
+  EXPECT_NEAR(surface_area(mesh), area, 1e-3 * area);
+}
+
+}  // namespace
+}  // namespace molsurf

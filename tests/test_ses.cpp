@@ -164,6 +164,16 @@ TEST(SolventExcludedSurface, ACageKeepsItsCavityAsAnInwardComponentAndOuterOnlyD
   EXPECT_GT(outer.measures.volume, all.measures.volume);  // the cavity's void is no longer taken out
 }
 
+TEST(SolventExcludedSurface, IsNotFarDenserThanTheDensityAsks) {
+  // Drawn from the SAS mesh, the SES inherits its short seam edges; the cleanup collapses
+  // those under 0.3 / sqrt(density) A. An even mesh at density 2 has about 4 faces per A^2.
+  const Structure crambin = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
+  const std::vector<Atom> atoms(crambin.atoms.begin(), crambin.atoms.begin() + 40);
+  const ComputedSurface s = ses_of(atoms);
+  EXPECT_LT(static_cast<double>(s.measures.faces) / s.measures.area, 20.0);
+  EXPECT_GE(s.quality_after.min_angle_deg, 1.0);
+}
+
 TEST(SolventExcludedSurface, RefusesAProbeOfZeroAndAtomsOfRadiusZero) {
   EXPECT_THROW(ses_of({atom_at({0, 0, 0}, 1.5)}, 0.0), Error);
   EXPECT_THROW(ses_of({atom_at({0, 0, 0}, 1.5), atom_at({2, 0, 0}, 0.0)}), Error);

@@ -15,6 +15,9 @@ struct CleanupOptions {
   // rules allow), whatever their faces' angles: meshers' floating-point boundary recovery
   // takes the faces around them for overlapping. 0: no such pass.
   double min_edge_fraction = 0.02;
+  // And edges shorter than this (angstrom), whatever the median: for a surface whose median
+  // edge is itself far below what its density asks (the SES drawn from the SAS mesh). 0: none.
+  double min_edge_length = 0;
   // False: CleanupStats::after is left empty, for a caller that measures the cleaned surface
   // anyway (compute_surface's check does).
   bool measure_after = true;

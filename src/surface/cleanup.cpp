@@ -81,7 +81,7 @@ class Sweep {
       std::sort(distorted.begin(), distorted.end());
       if (sweep(distorted, stats) == 0) break;
     }
-    if (s_.options.min_edge_fraction > 0) {
+    if (s_.options.min_edge_fraction > 0 || s_.options.min_edge_length > 0) {
       serial.begin(nullptr);
       serial.shorten_edges(stats);
       WorkResult r = serial.finish();

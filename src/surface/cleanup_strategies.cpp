@@ -424,7 +424,7 @@ void Cleaner::shorten_edges(CleanupStats& stats) {
           }
       });
   if (std::isnan(median2)) return;
-  const double floor = options_.min_edge_fraction * std::sqrt(median2);
+  const double floor = std::max(options_.min_edge_fraction * std::sqrt(median2), options_.min_edge_length);
   std::vector<std::pair<double, std::array<Index, 2>>> edges = short_edges(floor);
   stats.short_edges_before = edges.size();
   for (int pass = 0; pass < options_.passes && !edges.empty(); ++pass) {
