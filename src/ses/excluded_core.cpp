@@ -249,7 +249,7 @@ class CoreBuilder {
     const Index apex = new_vertex(centre + middle * probe_);
     auto face = [&](Index a, Index b, Index c) {
       const Vec3 m = (out_.mesh.vertices[a] + out_.mesh.vertices[b] + out_.mesh.vertices[c]) / 3.0;
-      add_face({a, b, c}, nearest_atom(atoms_at, m), u, -1);
+      add_face({a, b, c}, nearest_atom(atoms_at, atoms_, m), u, -1);
       ++out_.patch_faces;
     };
     if (loop.size() != edges.size()) {  // not one loop: a fan over the edges as they are
@@ -290,21 +290,6 @@ class CoreBuilder {
         if (contact_[c] != Index(-1)) contact_atoms_[contact_[c]] = atom_of(c);
     }
     return vertex < contact_atoms_.size() ? contact_atoms_[vertex] : -1;
-  }
-
-  std::int32_t nearest_atom(const std::vector<std::int32_t>& candidates, const Vec3& point) const {
-    std::int32_t best = -1;
-    double best_gap = std::numeric_limits<double>::infinity();
-    for (std::int32_t a : candidates) {
-      if (a < 0) continue;
-      const Atom& atom = atoms_[static_cast<std::size_t>(a)];
-      const double gap = norm(point - atom.centre) - atom.radius;
-      if (gap < best_gap) {
-        best_gap = gap;
-        best = a;
-      }
-    }
-    return best;
   }
 
   const Mesh& sas_;

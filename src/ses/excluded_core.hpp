@@ -36,6 +36,24 @@ struct ExcludedCore {
   std::size_t pinched_vertices = 0;  // SAS vertices where one atom's faces form several fans
 };
 
+// Of `candidates` (atom indices; negative ones skipped), the atom whose van der Waals sphere
+// lies nearest `point`; -1 if none (MSMS gives each vertex its closest atom likewise).
+template <class Indices>
+std::int32_t nearest_atom(const Indices& candidates, std::span<const Atom> atoms, const Vec3& point) {
+  std::int32_t best = -1;
+  double best_gap = 0;
+  for (const auto a : candidates) {
+    if (static_cast<std::int64_t>(a) < 0) continue;
+    const Atom& atom = atoms[static_cast<std::size_t>(a)];
+    const double gap = norm(point - atom.centre) - atom.radius;
+    if (best < 0 || gap < best_gap) {
+      best_gap = gap;
+      best = static_cast<std::int32_t>(a);
+    }
+  }
+  return best;
+}
+
 // `sas`: the solvent-accessible surface at probe radius `probe`, its face tags atom
 // indices. `ridge`: per SAS vertex, 1 for a ridge vertex (empty: every vertex rolled).
 // `arc_spacing`: the longest segment of a meridian arc, angstrom.

@@ -1,10 +1,10 @@
 #include "ses/probe_sweep.hpp"
 
+#include "geometry/point_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
-#include <tuple>
 
 namespace molsurf::ses_detail {
 
@@ -20,27 +20,17 @@ Vec3 rotated(const Vec3& v, const Vec3& n, double angle) {
 
 std::vector<ProbeCentre> probe_sweep(const SphereArrangement& arrangement, const std::vector<Vec3>& centres,
                                      const std::vector<double>& radii, double spacing) {
-  // Spheres by cell of a grid as wide as the largest sphere's diameter.
-  double cell = 0;
-  for (double r : radii) cell = std::max(cell, 2 * r);
-  if (!(cell > 0)) cell = 1;
-  auto key = [cell](const Vec3& p) {
-    return std::tuple<long, long, long>{static_cast<long>(std::floor(p.x / cell)), static_cast<long>(std::floor(p.y / cell)),
-                                        static_cast<long>(std::floor(p.z / cell))};
-  };
-  std::map<std::tuple<long, long, long>, std::vector<std::uint32_t>> grid;
-  for (std::uint32_t i = 0; i < centres.size(); ++i) grid[key(centres[i])].push_back(i);
+  // Spheres by cell of a grid as wide as the largest sphere's radius: a ball holding a point
+  // has its centre within that radius of it.
+  double reach = 0;
+  for (double r : radii) reach = std::max(reach, r);
+  const geometry::PointGrid grid(centres, reach);
   auto held_by_another = [&](const Vec3& c, std::uint32_t a, std::uint32_t b) {
-    const auto [x, y, z] = key(c);
-    for (long dx = -1; dx <= 1; ++dx)
-      for (long dy = -1; dy <= 1; ++dy)
-        for (long dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find({x + dx, y + dy, z + dz});
-          if (it == grid.end()) continue;
-          for (std::uint32_t k : it->second)
-            if (k != a && k != b && norm(c - centres[k]) < radii[k] * (1 - 1e-9)) return true;
-        }
-    return false;
+    bool held = false;
+    grid.for_each_near(c, [&](std::uint32_t k) {
+      held = held || (k != a && k != b && norm(c - centres[k]) < radii[k] * (1 - 1e-9));
+    });
+    return held;
   };
   std::vector<ProbeCentre> out;
   out.reserve(arrangement.vertices.size() * 4);

@@ -4,12 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 #include <vector>
 
+#include "geometry/point_grid.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/compute_areas.hpp"
@@ -26,50 +25,21 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The atom a sweep face belongs to: of the atoms its probe touches, the one whose van der
-// Waals sphere lies nearest the face (MSMS gives each vertex its closest atom likewise).
-std::int32_t nearest_touched_atom(const ProbeCentre& probe, std::span<const Atom> atoms, const Vec3& point) {
-  std::int32_t best = static_cast<std::int32_t>(probe.atoms[0]);
-  double best_gap = std::numeric_limits<double>::infinity();
-  for (std::uint32_t a : probe.atoms) {
-    const double gap = norm(point - atoms[a].centre) - atoms[a].radius;
-    if (gap < best_gap) {
-      best_gap = gap;
-      best = static_cast<std::int32_t>(a);
-    }
-  }
-  return best;
-}
-
-using Cell = std::tuple<long, long, long>;
-
-Cell cell_of(const Vec3& p, double size) {
-  return {static_cast<long>(std::floor(p.x / size)), static_cast<long>(std::floor(p.y / size)),
-          static_cast<long>(std::floor(p.z / size))};
-}
-
-// Points by cell of a grid: whether any lies within `reach` of a query point.
+// Whether any of some points lies within `reach` of a query point.
 class NearPoints {
  public:
-  NearPoints(const std::vector<Vec3>& points, double reach) : reach_(reach) {
-    for (const Vec3& p : points) grid_[cell_of(p, reach)].push_back(p);
-  }
+  NearPoints(std::vector<Vec3> points, double reach)
+      : points_(std::move(points)), reach_(reach), grid_(points_, reach) {}
   bool near(const Vec3& q) const {
-    const auto [x, y, z] = cell_of(q, reach_);
-    for (long dx = -1; dx <= 1; ++dx)
-      for (long dy = -1; dy <= 1; ++dy)
-        for (long dz = -1; dz <= 1; ++dz) {
-          const auto it = grid_.find({x + dx, y + dy, z + dz});
-          if (it == grid_.end()) continue;
-          for (const Vec3& p : it->second)
-            if (norm(p - q) <= reach_) return true;
-        }
-    return false;
+    bool found = false;
+    grid_.for_each_near(q, [&](std::uint32_t i) { found = found || norm(points_[i] - q) <= reach_; });
+    return found;
   }
 
  private:
+  std::vector<Vec3> points_;
   double reach_;
-  std::map<Cell, std::vector<Vec3>> grid_;
+  geometry::PointGrid grid_;
 };
 
 // The SAS vertices whose drawn faces the check found at fault (crossing or touching another
@@ -86,7 +56,7 @@ std::size_t mark_ridges(const ExcludedCore& core, const MeshCheck& check, const 
         if (v >= 0 && !ridge[static_cast<std::size_t>(v)]) seeds.push_back(sas.vertices[static_cast<std::size_t>(v)]);
     }
   if (seeds.empty()) return 0;
-  const NearPoints near(seeds, reach);
+  const NearPoints near(std::move(seeds), reach);
   std::size_t marked = 0;
   for (Index v = 0; v < sas.vertex_count(); ++v)
     if (!ridge[v] && near.near(sas.vertices[v])) {
@@ -159,7 +129,7 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
   std::vector<Vec3> ridge_points;
   for (Index v = 0; v < ridge.size(); ++v)
     if (ridge[v]) ridge_points.push_back(sas.vertices[v]);
-  const NearPoints near_ridge(ridge_points, 1.2 * spheres.probe);
+  const NearPoints near_ridge(std::move(ridge_points), 1.2 * spheres.probe);
   std::erase_if(probes, [&](const ProbeCentre& p) { return !near_ridge.near(p.centre); });
   stats.probes = probes.size();
   std::vector<Atom> balls(probes.size());
@@ -185,7 +155,8 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
     const ProbeCentre& probe = probes[static_cast<std::size_t>(mesh.face_tags[f])];
     const Triangle& t = mesh.faces[f];
     const Vec3 centroid = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
-    mesh.face_tags[f] = nearest_touched_atom(probe, atoms, centroid);
+    // The atom a sweep face belongs to: of the atoms its probe touches, the nearest.
+    mesh.face_tags[f] = nearest_atom(probe.atoms, atoms, centroid);
   }
   return std::move(mesh);
 }
