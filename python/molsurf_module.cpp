@@ -349,7 +349,11 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
 
   molsurf::ComputeSurfaceOptions options;
   options.surface = surface_kind(surface);
-  if (options.surface == molsurf::SurfaceKind::vdw) probe = 0;
+  // As --surface vdw: the surface at probe 0; a probe other than 0 or the default is refused.
+  if (options.surface == molsurf::SurfaceKind::vdw) {
+    if (probe != 0 && probe != 1.4) throw Error("surface='vdw' is the surface at probe 0: drop probe");
+    probe = 0;
+  }
   if (options.surface == molsurf::SurfaceKind::ses && probe == 0)
     throw Error("surface='ses' needs a probe radius above 0 (at 0 it is the van der Waals surface: surface='vdw')");
   if (options.surface == molsurf::SurfaceKind::ses && method != "one-pass")

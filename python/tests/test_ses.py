@@ -32,3 +32,6 @@ def test_ses_refuses_probe_zero():
         molsurf.surface(centres=np.array([[0.0, 0.0, 0.0]]), radii=np.array([1.7]), surface="ses", probe=0)
     with pytest.raises(molsurf.Error):
         molsurf.surface(centres=np.array([[0.0, 0.0, 0.0]]), radii=np.array([1.7]), surface="torus")
+    # As the command line's --surface vdw --probe 2: the vdW surface is the one at probe 0.
+    with pytest.raises(molsurf.Error, match="probe 0"):
+        molsurf.surface(centres=np.array([[0.0, 0.0, 0.0]]), radii=np.array([1.7]), surface="vdw", probe=2.0)
