@@ -465,45 +465,28 @@ PyTrajectoryAreas trajectory_areas(py::handle coords, py::handle radii, double p
     // The array `c` (kept alive here) is read, never written, while the GIL is released.
     py::gil_scoped_release release;
     const auto start = std::chrono::steady_clock::now();
-    std::vector<std::exception_ptr> failed(data->frames);
-    const auto frames = static_cast<std::int64_t>(data->frames);
     const std::size_t n = data->atoms;
     TrajectoryAreasData& d = *data;
-#pragma omp parallel num_threads(d.threads)
-    {
-      std::vector<molsurf::Atom> atoms(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        atoms[i].radius = d.radii[i];
-        atoms[i].serial = static_cast<int>(i + 1);
-      }
-#pragma omp for schedule(dynamic, 1)
-      for (std::int64_t f = 0; f < frames; ++f) {
-        try {
-          const double* frame = xyz + 3 * n * static_cast<std::size_t>(f);
-          for (std::size_t i = 0; i < n; ++i) atoms[i].centre = {frame[3 * i], frame[3 * i + 1], frame[3 * i + 2]};
-          const molsurf::ComputedAreas computed = molsurf::compute_areas(atoms, spheres, 1);
-          const molsurf::ExactReport exact = molsurf::make_exact_report(computed.arrangement, {}, outer_only);
-          d.area[f] = exact.area;
-          d.volume[f] = exact.volume;
-          const std::vector<double> atom_area = molsurf::exact_atom_area(computed.arrangement, outer_only);
-          std::copy(atom_area.begin(), atom_area.end(), d.area_per_atom.begin() + static_cast<std::ptrdiff_t>(n * f));
-        } catch (...) {
-          failed[f] = std::current_exception();
+    const auto set_frame = [&](std::size_t f, std::vector<molsurf::Atom>& atoms) {
+      if (atoms.size() != n) {
+        atoms.assign(n, {});
+        for (std::size_t i = 0; i < n; ++i) {
+          atoms[i].radius = d.radii[i];
+          atoms[i].serial = static_cast<int>(i + 1);
         }
       }
+      const double* frame = xyz + 3 * n * f;
+      for (std::size_t i = 0; i < n; ++i) atoms[i].centre = {frame[3 * i], frame[3 * i + 1], frame[3 * i + 2]};
+    };
+    const std::vector<molsurf::FrameAreas> computed =
+        molsurf::compute_frame_areas(d.frames, set_frame, spheres, outer_only, d.threads);
+    for (std::size_t f = 0; f < d.frames; ++f) {
+      d.area[f] = computed[f].area;
+      d.volume[f] = computed[f].volume;
+      std::copy(computed[f].atom_area.begin(), computed[f].atom_area.end(),
+                d.area_per_atom.begin() + static_cast<std::ptrdiff_t>(n * f));
     }
     d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // The first failing frame's error, whatever the thread count.
-    for (std::size_t f = 0; f < d.frames; ++f) {
-      if (!failed[f]) continue;
-      try {
-        std::rethrow_exception(failed[f]);
-      } catch (const Error& e) {
-        throw Error("frame " + std::to_string(f) + ": " + e.what());
-      } catch (const std::invalid_argument& e) {
-        throw Error("frame " + std::to_string(f) + ": " + e.what());  // arrange_spheres' refusals
-      }
-    }
   }
   return {std::move(data)};
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -208,9 +209,71 @@ TEST(CliAreas, AllModelsOfAnNmrEnsembleInOneCall) {
   const std::string chains = read_text(dir.path() / "chains.csv");
   EXPECT_EQ(chains.substr(0, chains.find('\n')), "model,chain,atoms,residues,area");
   EXPECT_EQ(std::count(chains.begin(), chains.end(), '\n'), 21);  // a header and one chain per model
-  const auto mesh = run_molsurf("--all-models -o s.vtp " + file, dir.path());
-  EXPECT_EQ(mesh.exit_code, 1);
-  EXPECT_NE(mesh.err.find("--areas-only"), std::string::npos) << mesh.err;
+}
+
+// A two-model PDB file: 1crn, and 1crn with its first residue's atoms moved by 0.5 A.
+std::filesystem::path two_model_file(const std::filesystem::path& dir) {
+  std::ifstream in(kData + "/pdb/1crn.pdb");
+  std::vector<std::string> atoms;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("ATOM", 0) == 0) atoms.push_back(line);
+  const std::filesystem::path path = dir / "two.pdb";
+  std::ofstream out(path);
+  for (int model = 1; model <= 2; ++model) {
+    out << "MODEL     " << std::setw(4) << model << "\n";
+    for (std::string line : atoms) {
+      if (model == 2 && line.substr(22, 4) == "   1") {
+        char x[9];
+        std::snprintf(x, sizeof x, "%8.3f", std::stod(line.substr(30, 8)) + 0.5);
+        line.replace(30, 8, x);
+      }
+      out << line << "\n";
+    }
+    out << "ENDMDL\n";
+  }
+  out << "END\n";
+  return path;
+}
+
+// --all-models writes meshes only when -o names them through {model}: one valid file per
+// model, each model's numbers those of a run on it alone; without -o, numbers only.
+TEST(CliAreas, AllModelsWritesOneMeshPerModelThroughTheNameTemplate) {
+  TempDir dir;
+  const std::string file = "'" + two_model_file(dir.path()).string() + "'";
+  const auto r = run_molsurf("-q --all-models -o 's_{model}.off' --json all.json " + file, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = read_text(dir.path() / "all.json");
+  const std::size_t models = json.find("\"models\"");
+  ASSERT_NE(models, std::string::npos) << json;
+  std::vector<double> areas;
+  for (const int model : {1, 2}) {
+    const std::string mesh = "s_" + std::to_string(model) + ".off";
+    ASSERT_TRUE(std::filesystem::exists(dir.path() / mesh)) << mesh;
+    const auto check = run_molsurf("check " + mesh, dir.path());
+    EXPECT_EQ(check.exit_code, 0) << mesh << "\n" << check.out << check.err;
+    const std::size_t entry = json.find("\"model\": " + std::to_string(model) + ",", models);
+    ASSERT_NE(entry, std::string::npos) << model;
+    const std::string entry_json = json.substr(entry, json.find('}', entry) - entry);
+    EXPECT_NE(entry_json.find("\"output\": \"" + mesh + "\""), std::string::npos) << entry_json;
+    EXPECT_GT(json_number(entry_json, "faces"), 1000);
+    const auto one = run_molsurf("-q --areas-only --model " + std::to_string(model) + " --json one.json " + file,
+                                 dir.path());
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    EXPECT_EQ(json_number(json.substr(entry), "area"), json_number(read_text(dir.path() / "one.json"), "area"));
+    areas.push_back(json_number(json.substr(entry), "area"));
+  }
+  EXPECT_NE(areas[0], areas[1]);  // the models differ, and so do their numbers
+
+  // Without {model} the files would overwrite each other: refused before any work.
+  const auto same = run_molsurf("--all-models -o s.vtp " + file, dir.path());
+  EXPECT_EQ(same.exit_code, 1);
+  EXPECT_NE(same.err.find("{model}"), std::string::npos) << same.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "s.vtp"));
+  // Without -o: the numbers, and no mesh anywhere.
+  const auto numbers = run_molsurf("-q --all-models --json n.json " + file, dir.path());
+  ASSERT_EQ(numbers.exit_code, 0) << numbers.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "two.vtp"));
+  EXPECT_NE(read_text(dir.path() / "n.json").find("\"models\""), std::string::npos);
 }
 
 // The progress bar: each stage with its percent on stderr, on a terminal or with --progress,

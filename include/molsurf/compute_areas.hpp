@@ -4,7 +4,9 @@
 // shell (the outer surface and each cavity) and in total, exact to rounding. The whole of
 // `molsurf --areas-only`; compute_surface runs it too, so that the mesh's report carries
 // the exact numbers beside the facets' own.
+#include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "molsurf/atoms.hpp"
@@ -28,5 +30,28 @@ ComputedAreas compute_areas(std::span<const Atom> atoms, const SphereOptions& sp
 
 // Each atom's exact area: all of it, or (outer_only) only what lies on the outer shells.
 std::vector<double> exact_atom_area(const SphereArrangement& arrangement, bool outer_only = false);
+
+}  // namespace molsurf
+
+namespace molsurf {
+
+// One frame's numbers: what --areas-only and areas() give for one structure.
+struct FrameAreas {
+  double area = 0, volume = 0;  // of the cavities too unless outer_only
+  std::size_t cavities = 0;
+  std::vector<double> atom_area;
+  double seconds = 0;  // of the arrangement
+};
+
+// Many frames of one job: the models of a file, the frames of a trajectory. Small frames run
+// in parallel, one thread each; large ones one after another on all threads. The numbers do
+// not depend on `threads` either way. atoms_of(f, atoms) fills frame f's atoms; it is called
+// on the thread that computes the frame, once for frame 0 first. A frame's refusal is thrown
+// as molsurf::Error prefixed with frame_name(f) (default: "frame F"), the lowest failing
+// frame's whatever the thread count.
+std::vector<FrameAreas> compute_frame_areas(std::size_t frames,
+                                            const std::function<void(std::size_t, std::vector<Atom>&)>& atoms_of,
+                                            const SphereOptions& spheres, bool outer_only, int threads = 0,
+                                            const std::function<std::string(std::size_t)>& frame_name = {});
 
 }  // namespace molsurf

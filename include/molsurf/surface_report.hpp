@@ -64,6 +64,8 @@ struct ModelReport {
   std::vector<ChainArea> chains;
   ClassAreas classes;
   double seconds = 0;
+  std::filesystem::path output;  // the model's mesh (--all-models -o NAME_{model}.EXT); empty: none
+  std::size_t faces = 0;         // the mesh's
 };
 
 struct SurfaceReport {

@@ -55,6 +55,7 @@ struct SurfaceCommand {
   void add_options(CLI::App& app);
   int run() const;
   int run_areas_only() const;
+  int run_model_meshes() const;
 };
 
 struct CheckCommand {

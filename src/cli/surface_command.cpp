@@ -477,26 +477,24 @@ std::string with_model_column(const std::string& csv, int model, bool header) {
   return out;
 }
 
-// --all-models: every model's areas (the first's already in `report`), each model's rows in
-// the tables under a leading `model` column.
-void add_model_tables(const SurfaceCommand& command, std::span<const Structure> models, SurfaceReport& report,
-                      OutputFiles& files) {
+// --all-models: every model's numbers in the report, each model's rows in the tables under a
+// leading `model` column.
+void add_model_tables(const SurfaceCommand& command, std::span<const Structure> models,
+                      std::span<const FrameAreas> computed, SurfaceReport& report, OutputFiles& files) {
   const std::optional<MaxAreaScale> relative = relative_scale(command);
   std::string atoms_csv, residues_csv, chains_csv;
   for (std::size_t k = 0; k < models.size(); ++k) {
     const Structure& s = models[k];
-    const ComputedAreas computed = compute_areas(s.atoms, command.spheres, command.threads);
-    const std::vector<double> area = exact_atom_area(computed.arrangement, command.outer_only);
-    const ExactReport exact = make_exact_report(computed.arrangement, {}, command.outer_only);
+    const std::vector<double>& area = computed[k].atom_area;
     ModelReport m;
     m.model = s.report.model_used;
     m.atoms = s.atoms.size();
-    m.area = exact.area;
-    m.volume = exact.volume;
-    for (const ShellReport& shell : exact.shells) m.cavities += shell.cavity;
+    m.area = computed[k].area;
+    m.volume = computed[k].volume;
+    m.cavities = computed[k].cavities;
     m.chains = area_per_chain(s.atoms, area);
     m.classes = class_areas(s.atoms, area);
-    m.seconds = computed.seconds;
+    m.seconds = computed[k].seconds;
     report.models.push_back(std::move(m));
     if (k == 0) {
       report.chains = report.models.back().chains;
@@ -512,6 +510,23 @@ void add_model_tables(const SurfaceCommand& command, std::span<const Structure> 
   if (!command.per_atom.empty()) files.add_text(command.per_atom, atoms_csv);
   if (!command.per_residue.empty()) files.add_text(command.per_residue, residues_csv);
   if (!command.per_chain.empty()) files.add_text(command.per_chain, chains_csv);
+}
+
+// Every model's exact areas, small models in parallel.
+std::vector<FrameAreas> model_areas(const SurfaceCommand& command, std::span<const Structure> models) {
+  return compute_frame_areas(
+      models.size(), [&](std::size_t k, std::vector<Atom>& atoms) { atoms = models[k].atoms; }, command.spheres,
+      command.outer_only, command.threads,
+      [&](std::size_t k) { return "model " + std::to_string(models[k].report.model_used); });
+}
+
+// --all-models -o NAME_{model}.EXT: model N's mesh file.
+std::filesystem::path model_output_path(const std::filesystem::path& pattern, int model) {
+  std::string name = pattern.string();
+  const std::string key = "{model}", number = std::to_string(model);
+  for (std::size_t at = name.find(key); at != std::string::npos; at = name.find(key, at + number.size()))
+    name.replace(at, key.size(), number);
+  return name;
 }
 
 void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshReport>& volume,
@@ -537,8 +552,13 @@ int SurfaceCommand::run() const {
       if (given) throw Error(std::string("--surface ses: ") + name + " applies to the SAS and vdW surfaces only");
   }
   if (areas_only) return run_areas_only();
-  if (all_models)
-    throw Error("--all-models needs --areas-only (meshes per model are not written; run once per --model for them)");
+  if (all_models) {
+    if (output_option->count() > 0) return run_model_meshes();
+    // Numbers only unless meshes are asked for, through -o's {model}.
+    if (surface == "ses")
+      throw Error("--all-models --surface ses: the SES's areas come from its mesh; give -o NAME_{model}.EXT");
+    return run_areas_only();
+  }
   const std::filesystem::path out = surface_output_path(*this);
   // Every output checked before any work: a wrong path costs nothing.
   const std::vector<OutputRequest> outputs = requested_outputs(*this, out);
@@ -649,7 +669,7 @@ int SurfaceCommand::run_areas_only() const {
   const ComputedAreas computed = compute_areas(s.atoms, spheres, threads);
   report.input = s.report;
   report.spheres = spheres;
-  report.areas_only = true;
+  report.areas_only = true;  // no mesh made
   report.outer_only = outer_only;
   report.threads = threads > 0 ? threads : omp_get_max_threads();
   report.exact = make_exact_report(computed.arrangement, {}, outer_only);
@@ -661,7 +681,7 @@ int SurfaceCommand::run_areas_only() const {
     if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
     add_area_tables(*this, s.atoms, atom_area, report, files);
   } else {
-    add_model_tables(*this, models, report, files);
+    add_model_tables(*this, models, model_areas(*this, models), report, files);
   }
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   const std::vector<std::filesystem::path> written_files = files.commit();
@@ -669,7 +689,103 @@ int SurfaceCommand::run_areas_only() const {
     text << "\n" << format_surface_report(report);
     std::string list;
     for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
-    text << "written: " << (list.empty() ? "nothing (--areas-only)" : list) << "\n";
+    const char* nothing = areas_only ? "nothing (--areas-only)" : "nothing (-o NAME_{model}.vtp writes each model's mesh)";
+    text << "written: " << (list.empty() ? nothing : list) << "\n";
+  }
+  return 0;
+}
+
+// --all-models -o NAME_{model}.EXT: each model's surface, checked and written as one
+// surface is; the report gives every model's numbers (the true spheres', or the facets' for
+// the SES) and the file it went to.
+int SurfaceCommand::run_model_meshes() const {
+  const std::pair<bool, const char*> single_mesh[] = {{split_components, "--split-components"},
+                                                      {volume_option->count() > 0, "--volume-mesh"},
+                                                      {true_points, "--true-points"}};
+  for (const auto& [given, name] : single_mesh)
+    if (given) throw Error(std::string("--all-models writes one mesh per model: drop ") + name);
+  if (sasa_structure_option->count() > 0)
+    throw Error("--sasa-structure writes one model: drop --all-models, or give --model N");
+  if (output.string().find("{model}") == std::string::npos)
+    throw Error("--all-models: -o " + output.string() +
+                " must hold {model}, which each model's number replaces (e.g. -o 1j8k_{model}.vtp)");
+  check_format_options(*this, output);
+  std::vector<OutputRequest> outputs;
+  if (json_option->count() > 0) outputs.push_back({json, "--json"});
+  if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
+  if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
+  if (per_chain_option->count() > 0) outputs.push_back({per_chain, "--per-chain"});
+  bool report_to_stdout = false;
+  for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
+  std::ostream& text = report_to_stdout ? std::cerr : std::cout;
+
+  note_threads(*this);
+  SurfaceReport report;
+  const auto read_start = std::chrono::steady_clock::now();
+  const std::vector<Structure> models = read_all_models(structure, read_options(*this));
+  report.seconds.read = seconds_since(read_start);
+  // Every model's file is known now, and checked with the rest before any work.
+  const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
+  for (const Structure& s : models) outputs.push_back({model_output_path(output, s.report.model_used), "-o", true});
+  check_output_paths(inputs, outputs);
+  for (const Structure& s : models) check_sphere_resources(structure, s.atoms, spheres, max_faces);
+  if (!quiet) text << format_read_report(models.front().report) << std::flush;
+
+  MeshCheckOptions check_options;
+  check_options.self_intersections = !skip_check;
+  check_options.threads = threads;
+  OutputFiles files;
+  std::vector<FrameAreas> areas(models.size());
+  std::vector<std::size_t> faces(models.size());
+  for (std::size_t k = 0; k < models.size(); ++k) {
+    const Structure& s = models[k];
+    const std::filesystem::path out = model_output_path(output, s.report.model_used);
+    if (!quiet) text << "model " << s.report.model_used << " (" << k + 1 << " of " << models.size() << ")\n" << std::flush;
+    const ComputedSurface computed = compute_with_progress(s.atoms, surface_compute_options(*this), quiet, progress, out);
+    if (!quiet)
+      for (const std::string& note : computed.notes) std::cerr << "molsurf: note: " << note << "\n";
+    const MeshWriteOptions write_options = surface_write_options(*this, s.atoms);
+    const WrittenCheck written = check_as_written(out, computed.mesh, computed.check, write_options, check_options,
+                                                  [](const MeshCheck& c) { return c.valid(); });
+    if (!written.note.empty() && !quiet) std::cerr << "molsurf: note: " << written.note << "\n";
+    files.add_mesh(out, computed.mesh, written.options);
+    const SurfaceMeasures& measures = written.rounded
+                                          ? measure_surface(*written.rounded, written.check, s.atoms.size())
+                                          : computed.measures;
+    faces[k] = measures.faces;
+    FrameAreas& a = areas[k];
+    a.seconds = computed.seconds.union_ + computed.seconds.cleanup + computed.seconds.check;
+    if (computed.exact.area_per_sphere.empty()) {  // the SES: the facets' numbers
+      a.area = measures.area;
+      a.volume = measures.volume;
+      for (const ComponentMeasure& c : measures.components) a.cavities += c.cavity();
+      a.atom_area = measures.atom_area;
+    } else {
+      const ExactReport exact = make_exact_report(computed.exact, {}, outer_only);
+      a.area = exact.area;
+      a.volume = exact.volume;
+      for (const ShellReport& shell : exact.shells) a.cavities += shell.cavity;
+      a.atom_area = exact_atom_area(computed.exact, outer_only);
+      if (k == 0) report.exact = exact;
+    }
+  }
+  report.input = models.front().report;
+  report.spheres = spheres;
+  report.surface = surface;
+  report.outer_only = outer_only;
+  report.threads = threads > 0 ? threads : omp_get_max_threads();
+  add_model_tables(*this, models, areas, report, files);
+  for (std::size_t k = 0; k < models.size(); ++k) {
+    report.models[k].output = model_output_path(output, models[k].report.model_used);
+    report.models[k].faces = faces[k];
+  }
+  if (!json.empty()) files.add_text(json, surface_report_json(report));
+  const std::vector<std::filesystem::path> written_files = files.commit();
+  if (!quiet) {
+    text << "\n" << format_surface_report(report);
+    std::string list;
+    for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();
+    text << "written: " << list << "\n";
   }
   return 0;
 }

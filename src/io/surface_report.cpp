@@ -97,7 +97,7 @@ void format_shells(const SurfaceReport& r, const std::function<void(const std::s
       break;
     }
     std::string mesh;
-    if (!r.areas_only)
+    if (!r.areas_only && r.models.empty())  // one mesh, whose components the shells follow
       mesh = s.mesh_component >= 0
                  ? ", " + std::to_string(r.components[s.mesh_component].faces) + " faces"
                  : (s.cavity ? ", open in the mesh" : ", not in the mesh");
@@ -152,11 +152,16 @@ std::string format_surface_report(const SurfaceReport& r) {
   auto row = [&](const std::string& label, const std::string& value) {
     out += "  " + label + std::string(label.size() < 22 ? 22 - label.size() : 1, ' ') + value + "\n";
   };
-  if (r.areas_only) {
-    const ExactReport& e = *r.exact;
-    row("area", fixed(e.area, 4) + " A^2 (true spheres, exact to rounding)");
-    row("volume", fixed(e.volume, 4) + " A^3 (inside the outer surface, minus cavities)");
-    format_shells(r, row);
+  // Numbers only, or one mesh per model: the first model's numbers, then every model's.
+  if (r.areas_only || !r.models.empty()) {
+    if (r.exact) {
+      row("area", fixed(r.exact->area, 4) + " A^2 (true spheres, exact to rounding)");
+      row("volume", fixed(r.exact->volume, 4) + " A^3 (inside the outer surface, minus cavities)");
+      format_shells(r, row);
+    } else {
+      row("area", fixed(r.models.front().area, 2) + " A^2 (the facets')");
+      row("volume", fixed(r.models.front().volume, 2) + " A^3 (the facets')");
+    }
     if (r.chains.size() > 1) row("by chain", chain_areas(r));
     if (r.classes) row("by class", class_line(*r.classes));
     for (std::size_t k = 0; k < r.models.size(); ++k) {
@@ -164,12 +169,24 @@ std::string format_surface_report(const SurfaceReport& r) {
       char line[160];
       std::snprintf(line, sizeof line, "model %d: %zu atoms, area %.2f A^2, volume %.2f A^3, %zu cavit%s", m.model,
                     m.atoms, m.area, m.volume, m.cavities, m.cavities == 1 ? "y" : "ies");
-      row(k == 0 ? "every model" : "", line);
+      std::string mesh;
+      if (!m.output.empty()) mesh = ", " + std::to_string(m.faces) + " faces in " + m.output.string();
+      row(k == 0 ? "every model" : "", line + mesh);
     }
-    row("arrangement", std::to_string(e.vertices) + " vertices, " + std::to_string(e.arcs) + " arcs, " +
-                           std::to_string(e.buried_atoms) + " buried atoms");
-    row("time", "read " + fixed(r.seconds.read, 2) + " s, areas " + fixed(e.seconds, 3) + " s (" +
-                    std::to_string(r.threads) + " thread" + (r.threads == 1 ? "" : "s") + ")");
+    const std::string threads = " (" + std::to_string(r.threads) + " thread" + (r.threads == 1 ? "" : "s") + ")";
+    if (r.areas_only) {
+      const ExactReport& e = *r.exact;
+      row("arrangement", std::to_string(e.vertices) + " vertices, " + std::to_string(e.arcs) + " arcs, " +
+                             std::to_string(e.buried_atoms) + " buried atoms");
+    }
+    if (r.models.empty()) {
+      row("time", "read " + fixed(r.seconds.read, 2) + " s, areas " + fixed(r.exact->seconds, 3) + " s" + threads);
+    } else {
+      double seconds = 0;  // summed over the models, which may have run side by side
+      for (const ModelReport& m : r.models) seconds += m.seconds;
+      row("time", "read " + fixed(r.seconds.read, 2) + " s, " + (r.areas_only ? "areas " : "surfaces ") +
+                      fixed(seconds, 2) + " s summed over the models" + threads);
+    }
     return out;
   }
   const char* kind = r.surface == "ses"   ? " (solvent-excluded)"
@@ -262,7 +279,7 @@ std::string surface_report_json(const SurfaceReport& r) {
       j.key("atoms").begin_array();
       for (std::uint32_t a : s.atoms) j.value(a);
       j.end_array();
-      if (!r.areas_only) {
+      if (!r.areas_only && r.models.empty()) {
         j.key("mesh_component");
         if (s.mesh_component >= 0) j.value(s.mesh_component);
         else j.null();
@@ -299,13 +316,14 @@ std::string surface_report_json(const SurfaceReport& r) {
       j.begin_object();
       j.field("model", m.model).field("atoms", m.atoms).field("area", m.area).field("volume", m.volume);
       j.field("cavities", m.cavities).field("seconds", m.seconds);
+      if (!m.output.empty()) j.field("output", m.output.string()).field("faces", m.faces);
       write_classes(j, m.classes);
       write_chains(j, m.chains);
       j.end_object();
     }
     j.end_array();
   }
-  if (r.areas_only) {
+  if (r.areas_only || !r.models.empty()) {
     j.field("threads", r.threads);
     j.key("seconds").begin_object().field("read", r.seconds.read).end_object();
     j.end_object();
