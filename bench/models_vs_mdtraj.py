@@ -4,7 +4,7 @@
 Both tools get the same atoms (MDTraj's topology, hydrogens included), the same radii (MDTraj's
 per-element radii, passed to molsurf) and the same probe (1.4 A); the frames are MDTraj's
 coordinates (nm, times 10 for molsurf). MDTraj samples 960 points per atom (its default) and
-runs on one thread; molsurf gives the exact areas of the true spheres on the threads asked
+runs on all cores (OpenMP); molsurf gives the exact areas of the true spheres on the threads asked
 for. The table gives medians of in-process calls (loading excluded) and the largest per-atom
 difference, which is MDTraj's sampling error.
 
@@ -62,7 +62,7 @@ def main():
 
     t_md, md_area = median_seconds(lambda: mdtraj.shrake_rupley(traj, probe_radius=args.probe / 10), args.repeats)
     md_area = md_area * 100  # nm^2 -> A^2
-    rows = [("MDTraj shrake_rupley (960 points, 1 thread)", t_md)]
+    rows = [("MDTraj shrake_rupley (960 points, OpenMP)", t_md)]
     for threads in (1, 0):
         t, res = median_seconds(lambda: molsurf.areas(coords=xyz, radii=radii, probe=args.probe, threads=threads),
                                 args.repeats)

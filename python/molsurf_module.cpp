@@ -215,8 +215,8 @@ molsurf::ReadOptions read_options(std::optional<int> model, py::object chains, b
   options.keep_water = keep_water;
   options.keep_hydrogens = hydrogens;
   options.keep_hetatm = hetatm;
-  if (radius_set != "protor" && radius_set != "bondi")
-    throw Error("radius_set: '" + radius_set + "' is not a built-in radius set (protor or bondi)");
+  if (!molsurf::RadiusTable::is_builtin(radius_set))
+    throw Error("radius_set: '" + radius_set + "' is not a built-in radius set (protor, bondi or naccess)");
   options.radius_set = radius_set;
   if (radius_file) options.radius_file = *radius_file;
   return options;

@@ -276,6 +276,35 @@ TEST(CliAreas, AllModelsWritesOneMeshPerModelThroughTheNameTemplate) {
   EXPECT_NE(read_text(dir.path() / "n.json").find("\"models\""), std::string::npos);
 }
 
+// FreeSASA's spellings: --radii names a built-in set, --config-file reads a FreeSASA
+// configuration whose classes decide the polar and apolar areas.
+TEST(CliAreas, FreeSasaRadiusNamesAndConfigurationFiles) {
+  TempDir dir;
+  const std::string file = "'" + kData + "/pdb/1crn.pdb'";
+  const auto area_of = [&](const std::string& options) {
+    const auto r = run_molsurf("-q --areas-only --json a.json " + options + " " + file, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << options << "\n" << r.err;
+    return read_text(dir.path() / "a.json");
+  };
+  const std::string by_name = area_of("--radii naccess"), by_set = area_of("--radius-set naccess");
+  EXPECT_EQ(json_number(by_name, "area"), json_number(by_set, "area"));
+  EXPECT_NE(json_number(by_name, "area"), json_number(area_of(""), "area"));
+  // Two configurations that differ only in the class of CA: the same area, and the CA atoms'
+  // share moves from apolar to polar.
+  for (const char* cls : {"apolar", "polar"}) {
+    std::ofstream(dir.path() / (std::string(cls) + ".config"))
+        << "name: test\ntypes:\nCA_TYPE 1.88 " << cls << "\nO 1.42 polar\natoms:\nANY CA CA_TYPE\nANY O O\n";
+  }
+  const std::string apolar = area_of("--config-file apolar.config"), polar = area_of("--config-file polar.config");
+  EXPECT_EQ(json_number(apolar, "area"), json_number(polar, "area"));
+  const double moved = json_number(polar, "polar") - json_number(apolar, "polar");
+  EXPECT_GT(moved, 10);
+  EXPECT_NEAR(json_number(apolar, "apolar") - json_number(polar, "apolar"), moved, 1e-6);
+  const auto missing = run_molsurf("--areas-only --radii nosuchset " + file, dir.path());
+  EXPECT_NE(missing.exit_code, 0);  // not a set, and no such file
+  EXPECT_NE(missing.err.find("nosuchset"), std::string::npos) << missing.err;
+}
+
 // The progress bar: each stage with its percent on stderr, on a terminal or with --progress,
 // never with -q, nothing when stderr is a file and --progress is not given.
 TEST(CliProgress, StagesOnATerminalOrWhenAskedAndSilenceOtherwise) {

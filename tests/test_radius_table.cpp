@@ -81,8 +81,82 @@ TEST(RadiusTable, UnknownBuiltinNamesTheKnownOnes) {
   } catch (const Error& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("'oons'"), std::string::npos) << message;
-    EXPECT_NE(message.find("bondi, protor"), std::string::npos) << message;
+    EXPECT_NE(message.find("bondi, naccess, protor"), std::string::npos) << message;
   }
+}
+
+// The optional class column: polar or apolar, given to what the lookup returns.
+TEST(RadiusTable, ClassColumnGivesPolarity) {
+  const RadiusTable t = RadiusTable::parse(
+      "atom ALA CB 1.9 apolar\natom ANY SG 1.8 Polar\nelement N 1.6\nelement S 1.8 polar\n", "t.txt");
+  EXPECT_EQ(t.radius("ALA", "CB", "C").polarity, Polarity::apolar);
+  EXPECT_EQ(t.radius("CYS", "SG", "S").polarity, Polarity::polar);
+  EXPECT_EQ(t.radius("HEM", "NA", "N").polarity, Polarity::by_element);
+  EXPECT_EQ(t.radius("MET", "SD", "S").polarity, Polarity::polar);
+  EXPECT_NE(parse_error("atom ALA CB 1.9 charged\n").find("table.txt:1: class 'charged' is not polar or apolar"),
+            std::string::npos)
+      << parse_error("atom ALA CB 1.9 charged\n");
+  EXPECT_NE(parse_error("default 1.8 polar\n").find("default"), std::string::npos);
+  // The built-in protor set carries FreeSASA's classes: carbon apolar, the rest (sulphur too) polar.
+  const RadiusTable protor = RadiusTable::builtin("protor");
+  EXPECT_EQ(protor.radius("MET", "SD", "S").polarity, Polarity::polar);
+  EXPECT_EQ(protor.radius("ALA", "CB", "C").polarity, Polarity::apolar);
+  EXPECT_EQ(protor.radius("GLY", "O", "O").polarity, Polarity::polar);
+}
+
+// FreeSASA's classifier configuration read as it is: types, atoms, wildcards; what it does
+// not list falls back to the protor set's element radii.
+TEST(RadiusTable, FreeSasaConfiguration) {
+  const RadiusTable t = RadiusTable::parse(
+      "# a FreeSASA configuration\n"
+      "name: test\n"
+      "types:\n"
+      "C_ALI 1.87 apolar\n"
+      "O 1.40 polar   # oxygen\n"
+      "S 1.85 apolar\n"
+      "atoms:\n"
+      "ANY CA C_ALI\n"
+      "ANY O  O\n"
+      "CYS SG S\n",
+      "test.config");
+  EXPECT_DOUBLE_EQ(t.radius("ALA", "CA", "C").radius, 1.87);
+  EXPECT_EQ(t.radius("ALA", "CA", "C").polarity, Polarity::apolar);
+  EXPECT_EQ(t.radius("ALA", "CA", "C").source, Source::residue_atom);
+  EXPECT_DOUBLE_EQ(t.radius("GLY", "O", "O").radius, 1.40);
+  EXPECT_EQ(t.radius("CYS", "SG", "S").polarity, Polarity::apolar);
+  // Not listed: protor's element radius, classed by element.
+  const auto nz = t.radius("LYS", "NZ", "N");
+  EXPECT_DOUBLE_EQ(nz.radius, RadiusTable::builtin("protor").radius("HEM", "NZ", "N").radius);
+  EXPECT_EQ(nz.source, Source::element);
+  EXPECT_EQ(nz.polarity, Polarity::by_element);
+  // Its errors name the line.
+  const auto error = [](const std::string& text) {
+    try {
+      RadiusTable::parse(text, "c.config");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("types:\nC 1.8 apolar\natoms:\nANY CA X\n").find("c.config:4: type 'X' is not defined"),
+            std::string::npos)
+      << error("types:\nC 1.8 apolar\natoms:\nANY CA X\n");
+  EXPECT_NE(error("types:\nC 1.8 greasy\n").find("c.config:2: class 'greasy'"), std::string::npos);
+  EXPECT_NE(error("types:\nC one apolar\n").find("c.config:2: radius 'one'"), std::string::npos);
+  EXPECT_NE(error("types:\nC 1.8 apolar\n").find("no atoms"), std::string::npos);
+  EXPECT_NE(error("types:\nC 1.8 apolar\nC 1.7 apolar\n").find("second definition of type"), std::string::npos);
+  EXPECT_NE(error("types:\nC 1.8 apolar\natoms:\nANY CA C\nANY CA C\n").find("second entry"),
+            std::string::npos);
+}
+
+// NACCESS's radii are built in, as FreeSASA's --radii=naccess has them.
+TEST(RadiusTable, NaccessBuiltIn) {
+  EXPECT_TRUE(RadiusTable::is_builtin("naccess"));
+  EXPECT_FALSE(RadiusTable::is_builtin("oons"));
+  const RadiusTable naccess = RadiusTable::builtin("naccess");
+  EXPECT_DOUBLE_EQ(naccess.radius("ALA", "CB", "C").radius, 1.87);  // C_ALI
+  EXPECT_DOUBLE_EQ(naccess.radius("GLY", "O", "O").radius, 1.40);
+  EXPECT_EQ(naccess.radius("MET", "SD", "S").polarity, Polarity::apolar);  // NACCESS's S is apolar
 }
 
 TEST(RadiusTable, FormatAndLookupOrder) {
@@ -134,8 +208,8 @@ TEST(RadiusTable, FromFileErrors) {
 TEST(RadiusTable, MalformedLinesNameTheLine) {
   EXPECT_EQ(parse_error("default 1.8\nradius C 1.7\n"),
             "table.txt:2: unknown line kind 'radius' (expected 'atom', 'element' or 'default')");
-  EXPECT_EQ(parse_error("atom ALA CB\n"), "table.txt:1: 'atom' line needs 3 values (atom RESIDUE ATOM RADIUS), found 2");
-  EXPECT_EQ(parse_error("element C 1.7 1.8\n"), "table.txt:1: 'element' line needs 2 values (element SYMBOL RADIUS), found 3");
+  EXPECT_EQ(parse_error("atom ALA CB\n"), "table.txt:1: 'atom' line needs 3 or 4 values (atom RESIDUE ATOM RADIUS [CLASS]), found 2");
+  EXPECT_EQ(parse_error("element C 1.7 1.8\n"), "table.txt:1: class '1.8' is not polar or apolar");
   EXPECT_EQ(parse_error("\n\nelement C -1\n"), "table.txt:3: radius -1 is outside (0, 10] angstrom");
   EXPECT_EQ(parse_error("element C 1.7\nelement c 1.8\n"), "table.txt:2: second radius for element C");
   EXPECT_EQ(parse_error("atom ALA CB 1.8\natom ALA CB 1.9\n"), "table.txt:2: second radius for residue ALA atom CB");

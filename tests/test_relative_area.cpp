@@ -61,7 +61,13 @@ TEST(AtomClasses, PolarApolarMainAndSideChainAsFreeSasa) {
                                 atom("HEM", "NA", "N"), atom("CYS", "SG", "S")};
   const std::vector<double> area{1, 2, 4, 8, 16, 32, 64, 128};
   EXPECT_TRUE(is_polar(atoms[0]));
-  EXPECT_FALSE(is_polar(atoms[7]));  // sulphur counts as apolar, as in FreeSASA's classes
+  EXPECT_FALSE(is_polar(atoms[7]));  // by element, sulphur is apolar
+  Atom classed = atoms[7];
+  classed.polarity = Polarity::polar;  // a radius table's class comes first
+  EXPECT_TRUE(is_polar(classed));
+  classed = atoms[0];
+  classed.polarity = Polarity::apolar;
+  EXPECT_FALSE(is_polar(classed));
   EXPECT_TRUE(is_main_chain(atoms[4]));
   EXPECT_FALSE(is_main_chain(atoms[6]));  // not an amino acid
   const ClassAreas c = class_areas(atoms, area);

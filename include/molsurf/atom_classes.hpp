@@ -1,7 +1,9 @@
 #pragma once
-// Areas by atom class, as FreeSASA reports them: polar (nitrogen and oxygen, FreeSASA's
-// default classes) against apolar (every other element), and, for the twenty amino acids,
-// main chain (N, CA, C, O, OXT) against side chain.
+// Areas by atom class, as FreeSASA reports them: polar against apolar, as the radius table
+// classes the atom (the built-in protor set as FreeSASA's: carbon apolar, the rest polar; a
+// FreeSASA configuration's types), or by element where it gives no class (nitrogen and
+// oxygen polar); and, for the twenty amino acids, main chain (N, CA, C, O, OXT) against
+// side chain.
 #include <span>
 
 #include "molsurf/atoms.hpp"

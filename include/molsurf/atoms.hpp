@@ -13,6 +13,10 @@
 
 namespace molsurf {
 
+// An atom's class for the polar/apolar areas: the radius table's, when it gives one;
+// otherwise by element (nitrogen and oxygen polar).
+enum class Polarity : std::uint8_t { by_element, polar, apolar };
+
 struct Atom {
   Vec3 centre;
   double radius = 0;         // van der Waals radius (no probe), angstrom
@@ -27,6 +31,7 @@ struct Atom {
   double b_factor = 0;
   double charge = 0;         // PQR partial charge; 0 elsewhere
   bool hetero = false;
+  Polarity polarity = Polarity::by_element;
 };
 
 enum class StructureFormat { pdb, mmcif, pqr, xyzr };
@@ -37,7 +42,7 @@ struct ReadOptions {
   bool keep_water = false;
   bool keep_hydrogens = false;      // hydrogen and deuterium
   bool keep_hetatm = true;          // ligands, ions, cofactors
-  std::string radius_set = "protor";  // "protor" or "bondi"; ignored for PQR / xyzr
+  std::string radius_set = "protor";  // "protor", "bondi" or "naccess"; ignored for PQR / xyzr
   std::filesystem::path radius_file;  // user table; overrides radius_set when not empty
 };
 
@@ -80,23 +85,31 @@ Structure read_structure(const std::filesystem::path& path, const ReadOptions& o
 // the others in file order; a PDB or mmCIF file is parsed once.
 std::vector<Structure> read_all_models(const std::filesystem::path& path, const ReadOptions& options = {});
 
-// Radius tables are data: built-in sets are compiled in from data/radii/*.txt.
+// Radius tables are data: built-in sets are compiled in from data/radii/*.txt. A table is
+// molsurf's format (docs/radii.md) or a FreeSASA classifier configuration (name:, types:
+// and atoms: sections), whose atoms it does not list get the protor set's element radii.
 class RadiusTable {
  public:
-  static RadiusTable builtin(const std::string& name);          // "protor" or "bondi"
+  static RadiusTable builtin(const std::string& name);          // "protor", "bondi", "naccess"
+  static bool is_builtin(const std::string& name);
   static RadiusTable from_file(const std::filesystem::path& path);
   static RadiusTable parse(const std::string& text, const std::string& source_name);
 
   enum class Source { residue_atom, element, fallback_default };
-  struct Lookup { double radius; Source source; };
+  struct Lookup { double radius; Source source; Polarity polarity = Polarity::by_element; };
   Lookup radius(const std::string& residue_name, const std::string& atom_name,
                 const std::string& element) const;
   const std::string& name() const { return name_; }
 
  private:
   std::string name_;
-  std::map<std::pair<std::string, std::string>, double> by_residue_atom_;  // ("ANY", atom) allowed
-  std::map<std::string, double> by_element_;
+  struct Entry {
+    double radius;
+    Polarity polarity;
+  };
+  static RadiusTable parse_freesasa(const std::string& text, const std::string& source_name);
+  std::map<std::pair<std::string, std::string>, Entry> by_residue_atom_;  // ("ANY", atom) allowed
+  std::map<std::string, Entry> by_element_;
   double default_radius_ = 1.8;
 };
 

@@ -54,12 +54,30 @@ void SurfaceCommand::add_options(CLI::App& app) {
                "Drop hetero atoms: ligands, ions, cofactors (kept by default, e.g. haem)")
       ->group(input);
   app.add_option("--radius-set", read.radius_set,
-                 "Built-in radii: protor (Tsai et al. 1999, by residue and atom) or bondi (by element)")
-      ->check(CLI::IsMember({"protor", "bondi"}))
+                 "Built-in radii: protor (Tsai et al. 1999, by residue and atom), naccess (NACCESS's, as\n"
+                 "FreeSASA has them) or bondi (by element)")
+      ->check(CLI::IsMember({"protor", "naccess", "bondi"}))
       ->capture_default_str()
       ->group(input);
-  app.add_option("--radii", read.radius_file, "User radius table (format: docs/radii.md); overrides --radius-set")
-      ->check(readable_file())
+  // FreeSASA's spellings: --radii=protor|naccess names a built-in set, --config-file a file.
+  app.add_option_function<std::string>(
+         "--radii,--config-file",
+         [this](const std::string& value) {
+           if (RadiusTable::is_builtin(value)) {
+             read.radius_set = value;
+             read.radius_file.clear();
+           } else {
+             read.radius_file = value;
+           }
+         },
+         "Radius table: a built-in set's name (protor, naccess, bondi: as --radius-set), or a file in\n"
+         "molsurf's format or FreeSASA's classifier configuration, whose polar/apolar classes are used\n"
+         "too (docs/radii.md; a file named like a set: ./NAME); overrides --radius-set")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            return RadiusTable::is_builtin(value) ? std::string() : readable_file()(value);
+          },
+          "SET|FILE"))
       ->group(input);
 
   auto* sphere = "Spheres";

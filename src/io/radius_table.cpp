@@ -1,7 +1,8 @@
 // Radius tables are data (docs/radii.md). One line per entry, '#' starts a comment:
-//   atom RESIDUE ATOM RADIUS    RESIDUE may be ANY
-//   element SYMBOL RADIUS
+//   atom RESIDUE ATOM RADIUS [CLASS]    RESIDUE may be ANY; CLASS polar or apolar
+//   element SYMBOL RADIUS [CLASS]
 //   default RADIUS
+// or a FreeSASA classifier configuration (name:, types: and atoms: sections).
 #include <cctype>
 #include <string>
 #include <string_view>
@@ -26,7 +27,26 @@ std::string upper(std::string_view s) {
 
 const std::string any_residue = "ANY";
 
+// "polar" or "apolar", any case; nullopt for anything else.
+std::optional<Polarity> polarity_from(std::string_view field) {
+  const std::string name = upper(field);
+  if (name == "POLAR") return Polarity::polar;
+  if (name == "APOLAR") return Polarity::apolar;
+  return std::nullopt;
+}
+
+// A FreeSASA configuration has section headers, "types:" among them; molsurf's format has
+// none.
+bool is_freesasa_configuration(const std::string& text) {
+  detail::DataLines lines(text);
+  while (lines.next())
+    if (upper(lines.fields()[0]) == "TYPES:") return true;
+  return false;
+}
+
 }  // namespace
+
+bool RadiusTable::is_builtin(const std::string& name) { return detail::builtin_radius_sets().count(name) > 0; }
 
 RadiusTable RadiusTable::builtin(const std::string& name) {
   const auto& sets = detail::builtin_radius_sets();
@@ -37,8 +57,7 @@ RadiusTable RadiusTable::builtin(const std::string& name) {
     throw Error("unknown radius set '" + name + "' (built-in sets: " + known +
                 "; use a radius file for others)");
   }
-  RadiusTable table = parse(found->second, name);
-  return table;
+  return parse(found->second, name);
 }
 
 RadiusTable RadiusTable::from_file(const std::filesystem::path& path) {
@@ -46,6 +65,7 @@ RadiusTable RadiusTable::from_file(const std::filesystem::path& path) {
 }
 
 RadiusTable RadiusTable::parse(const std::string& text, const std::string& source_name) {
+  if (is_freesasa_configuration(text)) return parse_freesasa(text, source_name);
   RadiusTable table;
   table.name_ = source_name;
   bool has_default = false;
@@ -57,11 +77,19 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
     const std::vector<std::string_view>& fields = lines.fields();
 
     const std::string kind = upper(fields[0]);
-    const auto expect_fields = [&](std::size_t count, const char* form) {
-      if (fields.size() != count)
+    // `count` fields, or one more (a class) where `with_class`.
+    const auto expect_fields = [&](std::size_t count, const char* form, bool with_class = false) {
+      if (fields.size() != count && !(with_class && fields.size() == count + 1))
         fail(source_name, line_number,
              detail::excerpt(fields[0]) + " line needs " + std::to_string(count - 1) +
-                 " values (" + form + "), found " + std::to_string(fields.size() - 1));
+                 (with_class ? " or " + std::to_string(count) : std::string()) + " values (" + form + "), found " +
+                 std::to_string(fields.size() - 1));
+    };
+    const auto class_from = [&](std::size_t at) {
+      if (fields.size() <= at) return Polarity::by_element;
+      const std::optional<Polarity> polarity = polarity_from(fields[at]);
+      if (!polarity) fail(source_name, line_number, "class " + detail::excerpt(fields[at]) + " is not polar or apolar");
+      return *polarity;
     };
     const auto radius_from = [&](std::string_view field) {
       const std::optional<double> radius = detail::parse_double(field);
@@ -73,17 +101,17 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
     };
 
     if (kind == "ATOM") {
-      expect_fields(4, "atom RESIDUE ATOM RADIUS");
+      expect_fields(4, "atom RESIDUE ATOM RADIUS [CLASS]", true);
       const auto key = std::make_pair(upper(fields[1]), upper(fields[2]));
-      const double radius = radius_from(fields[3]);
-      if (!table.by_residue_atom_.emplace(key, radius).second)
+      const Entry entry{radius_from(fields[3]), class_from(4)};
+      if (!table.by_residue_atom_.emplace(key, entry).second)
         fail(source_name, line_number,
              "second radius for residue " + detail::escaped(key.first) + " atom " + detail::escaped(key.second));
     } else if (kind == "ELEMENT") {
-      expect_fields(3, "element SYMBOL RADIUS");
+      expect_fields(3, "element SYMBOL RADIUS [CLASS]", true);
       const std::string element = upper(fields[1]);
-      const double radius = radius_from(fields[2]);
-      if (!table.by_element_.emplace(element, radius).second)
+      const Entry entry{radius_from(fields[2]), class_from(3)};
+      if (!table.by_element_.emplace(element, entry).second)
         fail(source_name, line_number, "second radius for element " + detail::escaped(element));
     } else if (kind == "DEFAULT") {
       expect_fields(2, "default RADIUS");
@@ -101,12 +129,61 @@ RadiusTable RadiusTable::parse(const std::string& text, const std::string& sourc
   return table;
 }
 
+// FreeSASA's classifier configuration: "types:" lines TYPE RADIUS CLASS, "atoms:" lines
+// RESIDUE ATOM TYPE (RESIDUE may be ANY), a "name:" line; sections in any order, each type
+// defined before its atoms use it. What the file does not list gets the protor set's
+// element radii, as FreeSASA guesses an unknown atom's radius from its element.
+RadiusTable RadiusTable::parse_freesasa(const std::string& text, const std::string& source_name) {
+  RadiusTable table = builtin("protor");
+  table.name_ = source_name;
+  table.by_residue_atom_.clear();
+  std::map<std::string, Entry> types;
+  enum class Section { none, types, atoms } section = Section::none;
+  detail::DataLines lines(text);
+  while (lines.next()) {
+    const std::size_t line_number = lines.line_number();
+    const std::vector<std::string_view>& fields = lines.fields();
+    const std::string head = upper(fields[0]);
+    if (head == "NAME:") continue;
+    if (head == "TYPES:" || head == "ATOMS:") {
+      if (fields.size() != 1) fail(source_name, line_number, detail::excerpt(fields[0]) + " stands alone on its line");
+      section = head == "TYPES:" ? Section::types : Section::atoms;
+      continue;
+    }
+    if (section == Section::none)
+      fail(source_name, line_number, "a line before any section (expected 'types:' or 'atoms:' first)");
+    if (fields.size() != 3)
+      fail(source_name, line_number,
+           std::string(section == Section::types ? "a type is TYPE RADIUS CLASS" : "an atom is RESIDUE ATOM TYPE") +
+               ", found " + std::to_string(fields.size()) + " fields");
+    if (section == Section::types) {
+      const std::optional<double> radius = detail::parse_double(fields[1]);
+      if (!radius || *radius <= 0 || *radius > 10)
+        fail(source_name, line_number, "radius " + detail::excerpt(fields[1]) + " is not a number in (0, 10] angstrom");
+      const std::optional<Polarity> polarity = polarity_from(fields[2]);
+      if (!polarity) fail(source_name, line_number, "class " + detail::excerpt(fields[2]) + " is not polar or apolar");
+      if (!types.emplace(upper(fields[0]), Entry{*radius, *polarity}).second)
+        fail(source_name, line_number, "second definition of type " + detail::escaped(fields[0]));
+    } else {
+      const auto type = types.find(upper(fields[2]));
+      if (type == types.end())
+        fail(source_name, line_number, "type " + detail::excerpt(fields[2]) + " is not defined in 'types:'");
+      const auto key = std::make_pair(upper(fields[0]), upper(fields[1]));
+      if (!table.by_residue_atom_.emplace(key, type->second).second)
+        fail(source_name, line_number,
+             "second entry for residue " + detail::escaped(key.first) + " atom " + detail::escaped(key.second));
+    }
+  }
+  if (table.by_residue_atom_.empty()) fail(source_name, "no atoms (expected an 'atoms:' section)");
+  return table;
+}
+
 RadiusTable::Lookup RadiusTable::radius(const std::string& residue_name,
                                         const std::string& atom_name,
                                         const std::string& element) const {
   if (const auto found = by_residue_atom_.find({residue_name, atom_name});
       found != by_residue_atom_.end())
-    return {found->second, Source::residue_atom};
+    return {found->second.radius, Source::residue_atom, found->second.polarity};
   // A wildcard row names an atom, not an element: "CA" is C-alpha for it, so it must not
   // catch a calcium ion named CA. It applies only when the element is the one letter the
   // name starts with (or the element is unknown).
@@ -116,10 +193,10 @@ RadiusTable::Lookup RadiusTable::radius(const std::string& residue_name,
   if (wildcard_applies) {
     if (const auto found = by_residue_atom_.find({any_residue, atom_name});
         found != by_residue_atom_.end())
-      return {found->second, Source::residue_atom};
+      return {found->second.radius, Source::residue_atom, found->second.polarity};
   }
   if (const auto found = by_element_.find(element); found != by_element_.end())
-    return {found->second, Source::element};
+    return {found->second.radius, Source::element, found->second.polarity};
   return {default_radius_, Source::fallback_default};
 }
 

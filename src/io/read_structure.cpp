@@ -311,6 +311,7 @@ Structure select_atoms(ModelRecords model, const std::filesystem::path& path, St
       const RadiusTable::Lookup lookup =
           table->radius(upper(atom.residue_name), upper(atom.atom_name), atom.element);
       atom.radius = lookup.radius;
+      atom.polarity = lookup.polarity;
       if (lookup.source == RadiusTable::Source::residue_atom) continue;
       ++(lookup.source == RadiusTable::Source::element ? report.radius_from_element
                                                         : report.radius_default);

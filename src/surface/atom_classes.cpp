@@ -6,7 +6,10 @@
 
 namespace molsurf {
 
-bool is_polar(const Atom& atom) { return atom.element == "N" || atom.element == "O"; }
+bool is_polar(const Atom& atom) {
+  if (atom.polarity != Polarity::by_element) return atom.polarity == Polarity::polar;
+  return atom.element == "N" || atom.element == "O";
+}
 
 bool is_amino_acid(const Atom& atom) { return max_residue_area(atom.residue_name).has_value(); }
 
