@@ -305,6 +305,44 @@ TEST(CliAreas, FreeSasaRadiusNamesAndConfigurationFiles) {
   EXPECT_NE(missing.err.find("nosuchset"), std::string::npos) << missing.err;
 }
 
+// --format: FreeSASA's reports on standard output and no mesh; --depth lists residues and atoms.
+TEST(CliAreas, FreeSasaFormatsOnStandardOutputWithoutAMesh) {
+  TempDir dir;
+  const std::string file = "'" + kData + "/pdb/1crn.pdb'";
+  const auto json = run_molsurf("--format json --depth atom " + file, dir.path());
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));  // no mesh, no file
+  const double area = json_number(json.out, "area");
+  // 327 atoms, whose areas add up to the total; 46 residues.
+  std::size_t atoms = 0;
+  double sum = 0;
+  for (std::size_t at = json.out.find("\"serial\""); at != std::string::npos; at = json.out.find("\"serial\"", at + 1)) {
+    ++atoms;
+    sum += json_number(json.out.substr(at), "area");
+  }
+  EXPECT_EQ(atoms, 327u);
+  EXPECT_NEAR(sum, area, 1e-9 * area);
+  const auto rsa = run_molsurf("--format rsa --format seq " + file, dir.path());
+  ASSERT_EQ(rsa.exit_code, 0) << rsa.err;
+  std::istringstream lines(rsa.out);
+  std::size_t res = 0, seq = 0;
+  double total = -1;
+  for (std::string line; std::getline(lines, line);) {
+    res += line.rfind("RES ", 0) == 0;
+    seq += line.rfind("SEQ ", 0) == 0;
+    if (line.rfind("TOTAL", 0) == 0) total = std::stod(line.substr(5));
+  }
+  EXPECT_EQ(res, 46u);
+  EXPECT_EQ(seq, 46u);
+  EXPECT_NEAR(total, area, 0.05);
+  EXPECT_LT(rsa.out.find("REM "), rsa.out.find("# Residues"));  // in the order given
+  const auto twice = run_molsurf("--format rsa --json - " + file, dir.path());
+  EXPECT_NE(twice.exit_code, 0);  // one report on standard output at most
+  const auto models = run_molsurf("--format rsa --all-models " + file, dir.path());
+  EXPECT_NE(models.exit_code, 0);
+  EXPECT_NE(models.err.find("--format"), std::string::npos) << models.err;
+}
+
 // The progress bar: each stage with its percent on stderr, on a terminal or with --progress,
 // never with -q, nothing when stderr is a file and --progress is not given.
 TEST(CliProgress, StagesOnATerminalOrWhenAskedAndSilenceOtherwise) {

@@ -92,8 +92,11 @@ struct SurfaceReport {
   bool areas_only = false;  // no mesh: faces, quality, cleanup and check are absent
   std::vector<ChainArea> chains;      // each chain's area (the exact areas when there are)
   std::optional<ClassAreas> classes;  // polar/apolar, main/side chain (atom_classes.hpp)
-  std::vector<ResidueArea> residues;  // listed in the JSON when `relative` is set
+  std::vector<ResidueArea> residues;  // listed in the JSON when not empty (--relative, --depth residue)
   std::optional<MaxAreaScale> relative;
+  // Listed in the JSON when not empty (--depth atom): each atom with its area.
+  std::span<const Atom> atoms;
+  std::vector<double> atom_area;
   std::vector<ModelReport> models;  // --all-models: every model's numbers (the rest is the first's)
 };
 

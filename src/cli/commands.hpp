@@ -33,6 +33,8 @@ struct SurfaceCommand {
   std::filesystem::path json, per_atom, per_residue, per_chain, sasa_structure;
   bool relative = false;                    // relative SASA per residue (Tien et al. 2013)
   std::string relative_scale = "theoretical";
+  std::vector<std::string> formats;  // FreeSASA's --format: reports on standard output, in order
+  std::string depth = "chain";       // FreeSASA's --depth: how much the JSON lists
   std::uint64_t max_faces = kDefaultMaxSphereFaces;
   double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;

@@ -14,6 +14,7 @@
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/freesasa_formats.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/report.hpp"
@@ -188,6 +189,20 @@ void SurfaceCommand::add_options(CLI::App& app) {
   app.add_option("--relative-scale", relative_scale,
                  "The maxima --relative divides by: theoretical (Tien et al. 2013's default) or empirical")
       ->check(CLI::IsMember({"theoretical", "empirical"}))
+      ->capture_default_str()
+      ->group(output_group);
+  app.add_option("--format", formats,
+                 "FreeSASA's report formats, on standard output in the order given (repeatable): log (the\n"
+                 "text report), json, rsa (NACCESS), seq (per residue), res (per residue type), pdb or cif\n"
+                 "(the structure with the areas as B-factors). Without -o no mesh is made (--areas-only)")
+      ->check(CLI::IsMember({"log", "json", "rsa", "seq", "res", "pdb", "cif"}))
+      ->allow_extra_args(false)
+      ->delimiter(',')
+      ->group(output_group);
+  app.add_option("--depth", depth,
+                 "How much the JSON lists, as FreeSASA's --depth: structure or chain (totals, chains and\n"
+                 "classes), residue (also each residue), atom (also each atom)")
+      ->check(CLI::IsMember({"structure", "chain", "residue", "atom"}))
       ->capture_default_str()
       ->group(output_group);
   app.add_flag("--areas-only", areas_only,
@@ -530,6 +545,39 @@ void add_model_tables(const SurfaceCommand& command, std::span<const Structure> 
   if (!command.per_chain.empty()) files.add_text(command.per_chain, chains_csv);
 }
 
+// --depth residue and atom: the JSON's residue and atom lists.
+void add_json_depth(const SurfaceCommand& command, std::span<const Atom> atoms, std::span<const double> atom_area,
+                    SurfaceReport& report) {
+  if (command.depth == "residue" || command.depth == "atom") report.residues = area_per_residue(atoms, atom_area);
+  if (command.depth == "atom") {
+    report.atoms = atoms;
+    report.atom_area.assign(atom_area.begin(), atom_area.end());
+  }
+}
+
+// --format: FreeSASA's reports, one after another, for standard output.
+std::string format_outputs(const SurfaceCommand& command, std::span<const Atom> atoms,
+                           std::span<const double> atom_area, const SurfaceReport& report) {
+  const std::string source = command.structure.string();
+  std::string out;
+  for (const std::string& format : command.formats) {
+    if (format == "log") out += format_surface_report(report);
+    else if (format == "json") out += surface_report_json(report);
+    else if (format == "seq") out += residue_sequence_text(atoms, atom_area, source);
+    else if (format == "res") out += residue_type_text(atoms, atom_area, source);
+    else if (format == "pdb" || format == "cif") out += sasa_structure_text("out." + format, atoms, atom_area);
+    else if (format == "rsa") {
+      RsaHeader header;
+      header.source = source;
+      header.radii = report.input.radius_set;
+      header.probe = command.spheres.probe;
+      header.scale = command.relative_scale == "empirical" ? MaxAreaScale::empirical : MaxAreaScale::theoretical;
+      out += rsa_text(atoms, atom_area, header);
+    }
+  }
+  return out;
+}
+
 // Every model's exact areas, small models in parallel.
 std::vector<FrameAreas> model_areas(const SurfaceCommand& command, std::span<const Structure> models) {
   return compute_frame_areas(
@@ -569,7 +617,14 @@ int SurfaceCommand::run() const {
     for (const auto& [given, name] : sas_only)
       if (given) throw Error(std::string("--surface ses: ") + name + " applies to the SAS and vdW surfaces only");
   }
+  if (!formats.empty() && all_models) throw Error("--format writes one model: drop --all-models, or give --model N");
   if (areas_only) return run_areas_only();
+  if (!formats.empty() && output_option->count() == 0) {
+    // Numbers only, as FreeSASA gives them: no mesh unless -o asks for one.
+    if (surface == "ses")
+      throw Error("--format --surface ses: the SES's areas come from its mesh; give -o FILE as well");
+    return run_areas_only();
+  }
   if (all_models) {
     if (output_option->count() > 0) return run_model_meshes();
     // Numbers only unless meshes are asked for, through -o's {model}.
@@ -579,10 +634,13 @@ int SurfaceCommand::run() const {
   }
   const std::filesystem::path out = surface_output_path(*this);
   // Every output checked before any work: a wrong path costs nothing.
-  const std::vector<OutputRequest> outputs = requested_outputs(*this, out);
+  std::vector<OutputRequest> outputs = requested_outputs(*this, out);
+  if (!formats.empty()) outputs.push_back({kStandardOutput, "--format"});
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
   check_format_options(*this, out);
+  // --format's reports stand alone on standard output, as FreeSASA's do.
+  const bool silent = quiet || !formats.empty();
   // With a report on standard output, the text report goes to standard error.
   bool report_to_stdout = false;
   for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
@@ -601,7 +659,7 @@ int SurfaceCommand::run() const {
   const std::uint64_t memory = max_memory_gb > 0 ? static_cast<std::uint64_t>(max_memory_gb * 1e9) : available_memory_bytes();
   if (estimate_resources(s.atoms, spheres).bytes > memory / 32) save_memory();
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
-  if (!quiet) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
+  if (!silent) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
 
   const ComputedSurface computed = compute_with_progress(s.atoms, surface_compute_options(*this), quiet, progress, out);
   if (!quiet)
@@ -648,9 +706,11 @@ int SurfaceCommand::run() const {
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
   add_area_tables(*this, s.atoms, atom_area, report, files);
   report.seconds.write = computed.seconds.measures + seconds_since(clock);
+  add_json_depth(*this, s.atoms, atom_area, report);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
+  if (!formats.empty()) files.add_text(kStandardOutput, format_outputs(*this, s.atoms, atom_area, report));
   const std::vector<std::filesystem::path> written_files = files.commit();
-  if (!quiet) print_summary(report, volume, volume_mesh, written_files, text);
+  if (!silent) print_summary(report, volume, volume_mesh, written_files, text);
   return 0;
 }
 
@@ -670,8 +730,10 @@ int SurfaceCommand::run_areas_only() const {
   if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
   if (per_chain_option->count() > 0) outputs.push_back({per_chain, "--per-chain"});
   add_sasa_structure_output(*this, outputs);
+  if (!formats.empty()) outputs.push_back({kStandardOutput, "--format"});
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
+  const bool silent = quiet || !formats.empty();  // --format's reports stand alone
   bool report_to_stdout = false;
   for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
   std::ostream& text = report_to_stdout ? std::cerr : std::cout;
@@ -683,7 +745,7 @@ int SurfaceCommand::run_areas_only() const {
                                                    : std::vector<Structure>{read_structure(structure, read_options(*this))};
   const Structure& s = models.front();
   report.seconds.read = seconds_since(read_start);
-  if (!quiet) text << format_read_report(s.report) << std::flush;
+  if (!silent) text << format_read_report(s.report) << std::flush;
   const ComputedAreas computed = compute_areas(s.atoms, spheres, threads);
   report.input = s.report;
   report.spheres = spheres;
@@ -701,9 +763,11 @@ int SurfaceCommand::run_areas_only() const {
   } else {
     add_model_tables(*this, models, model_areas(*this, models), report, files);
   }
+  add_json_depth(*this, s.atoms, atom_area, report);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
+  if (!formats.empty()) files.add_text(kStandardOutput, format_outputs(*this, s.atoms, atom_area, report));
   const std::vector<std::filesystem::path> written_files = files.commit();
-  if (!quiet) {
+  if (!silent) {
     text << "\n" << format_surface_report(report);
     std::string list;
     for (const std::filesystem::path& file : written_files) list += (list.empty() ? "" : ", ") + file.string();

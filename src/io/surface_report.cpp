@@ -295,17 +295,33 @@ std::string surface_report_json(const SurfaceReport& r) {
   }
   if (!r.chains.empty()) write_chains(j, r.chains);
   if (r.classes) write_classes(j, *r.classes);
-  if (r.relative) {
+  if (r.relative)
     j.field("relative_to", *r.relative == MaxAreaScale::theoretical ? "Tien 2013 theoretical" : "Tien 2013 empirical");
+  if (!r.residues.empty()) {
     j.key("residues").begin_array();
     for (const ResidueArea& res : r.residues) {
       j.begin_object();
       j.field("chain", res.chain).field("residue_name", res.residue_name).field("residue_number", res.residue_number);
       j.field("insertion_code", std::string(1, res.insertion_code == ' ' ? '_' : res.insertion_code));
       j.field("atoms", res.atoms).field("area", res.area);
-      j.key("relative");
-      if (const std::optional<double> max = max_residue_area(res.residue_name, *r.relative)) j.value(res.area / *max);
-      else j.null();
+      if (r.relative) {
+        j.key("relative");
+        if (const std::optional<double> max = max_residue_area(res.residue_name, *r.relative)) j.value(res.area / *max);
+        else j.null();
+      }
+      j.end_object();
+    }
+    j.end_array();
+  }
+  if (!r.atom_area.empty()) {
+    j.key("atoms").begin_array();
+    for (std::size_t i = 0; i < r.atoms.size() && i < r.atom_area.size(); ++i) {
+      const Atom& a = r.atoms[i];
+      j.begin_object();
+      j.field("serial", a.serial).field("atom_name", a.atom_name).field("element", a.element);
+      j.field("chain", a.chain).field("residue_name", a.residue_name).field("residue_number", a.residue_number);
+      j.field("insertion_code", std::string(1, a.insertion_code == ' ' ? '_' : a.insertion_code));
+      j.field("radius", a.radius).field("polar", is_polar(a)).field("area", r.atom_area[i]);
       j.end_object();
     }
     j.end_array();
