@@ -71,3 +71,19 @@ def test_trajectory_sasa_over_nmr_models(source_dir, data_dir, tmp_path):
     for number in numbers:
         single = molsurf.areas(st, model=number)
         assert rows[number] == [f"{single.area:.2f}", f"{single.volume:.2f}"]
+
+
+def test_md_interop_frames_from_mdtraj_or_mdanalysis(source_dir, data_dir, tmp_path):
+    pytest.importorskip("gemmi")
+    engines = [e for e, module in (("mdtraj", "mdtraj"), ("mdanalysis", "MDAnalysis"))
+               if __import__("importlib").util.find_spec(module)]
+    if not engines:
+        pytest.skip("neither MDTraj nor MDAnalysis is installed")
+    out = run_example(source_dir, "md_interop.py", tmp_path, "--engine", engines[0])
+    assert "1j8k.cif: 20 frames, 1402 atoms" in out
+    rows = [line.split() for line in out.splitlines() if line.strip() and line.split()[0].isdigit()]
+    assert [int(r[0]) for r in rows] == list(range(20))
+    # Each frame's area is that of the model read by molsurf itself (float32 coordinates in between).
+    for frame in (0, 19):
+        model = molsurf.read_structure(data_dir / "1j8k.cif", model=frame + 1, hydrogens=True, keep_water=True)
+        assert float(rows[frame][1]) == pytest.approx(molsurf.areas(model).area, abs=0.02)
