@@ -34,10 +34,15 @@ TEST(Icosphere, EveryEdgeHasTwoOppositelyOrientedFaces) {
   }
 }
 
-TEST(Icosphere, VerticesLieOnTheSphereAndFacesPointOutward) {
+// Inscribed: the corners lie just inside the sphere (2^-30 of the radius and 2^-48 of the
+// coordinates in), so that the polyhedra of tangent spheres do not touch.
+TEST(Icosphere, VerticesLieJustInsideTheSphereAndFacesPointOutward) {
   const Vec3 centre{-4, 0.5, 10};
   const Mesh m = make_icosphere(centre, 3.2, {.frequency = 6});
-  for (const Vec3& v : m.vertices) EXPECT_NEAR(norm(v - centre), 3.2, 1e-12);
+  for (const Vec3& v : m.vertices) {
+    EXPECT_LT(norm(v - centre), 3.2);
+    EXPECT_NEAR(norm(v - centre), 3.2 * (1 - std::ldexp(1.0, -30)), 1e-12);
+  }
   for (std::size_t f = 0; f < m.face_count(); ++f) {
     const Vec3 centroid = (m.vertices[m.faces[f][0]] + m.vertices[m.faces[f][1]] + m.vertices[m.faces[f][2]]) / 3.0;
     EXPECT_GT(dot(face_normal(m, f), centroid - centre), 0) << f;

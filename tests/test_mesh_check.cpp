@@ -242,7 +242,7 @@ TEST(MeshCheck, TetrahedraTouchingAtADuplicatedPointAreContacts) {
   EXPECT_EQ(c.intersecting_pairs, 0u);
   EXPECT_EQ(c.components, 2u);
   EXPECT_EQ(c.inward_components, 0u);
-  EXPECT_TRUE(c.valid());
+  EXPECT_FALSE(c.valid());  // shells touching: a defect, as an exact self-intersection test says
   expect_consistent(c);
 }
 
@@ -250,12 +250,14 @@ TEST(MeshCheck, CubesTouchingFaceToFaceAreContacts) {
   const MeshCheck c = check_mesh(joined(cube(), cube({1, 0, 0})));
   EXPECT_GT(c.contact_pairs, 0u);
   EXPECT_EQ(c.intersecting_pairs, 0u);
-  EXPECT_TRUE(c.valid());
+  EXPECT_FALSE(c.valid());
   // Offset by half a side along y: partial face overlap, still only touching.
   const MeshCheck shifted = check_mesh(joined(cube(), cube({1, 0.5, 0.25})));
   EXPECT_GT(shifted.contact_pairs, 0u);
   EXPECT_EQ(shifted.intersecting_pairs, 0u);
-  EXPECT_TRUE(shifted.valid());
+  EXPECT_FALSE(shifted.valid());
+  // A hair apart: no contact, valid.
+  EXPECT_TRUE(check_mesh(joined(cube(), cube({1 + 1e-12, 0, 0}))).valid());
 }
 
 TEST(MeshCheck, CoincidentCopyIntersects) {
@@ -286,8 +288,8 @@ TEST(MeshCheck, CavityIsValid) {
 
 // The nesting ray starts at a vertex of the cavity; this cavity's first vertex lies on
 // the outer wall (a contact), which says nothing about inside or outside, so another of
-// its vertices decides.
-TEST(MeshCheck, CavityTouchingTheWallAtAVertexIsValid) {
+// its vertices decides. The contact itself is a defect.
+TEST(MeshCheck, CavityTouchingTheWallAtAVertexIsNestedRightAndAContact) {
   Mesh cavity;
   cavity.vertices = {{-2, 0, 0}, {-1, 1, 0}, {-1, 0, 1}, {-1, -1, -1}};
   cavity.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
@@ -295,7 +297,8 @@ TEST(MeshCheck, CavityTouchingTheWallAtAVertexIsValid) {
   const MeshCheck c = check_mesh(joined(cube({-2, -2, -2}, 5), cavity));
   EXPECT_EQ(c.components, 2u);
   EXPECT_EQ(c.inward_components, 0u);
-  EXPECT_TRUE(c.valid()) << ::testing::PrintToString(c.defects());
+  EXPECT_GT(c.contact_pairs, 0u);
+  EXPECT_FALSE(c.valid());
   // Turned outward, the same shell is an inward component.
   EXPECT_EQ(check_mesh(joined(cube({-2, -2, -2}, 5), flipped(cavity))).inward_components, 1u);
 }

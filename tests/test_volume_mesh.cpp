@@ -117,7 +117,14 @@ TEST_F(VolumeMeshTest, OneSphereInABox) {
   // The tetrahedra fill the box minus the polyhedron, up to the rounding of their sum.
   const double expected = v.report.box_volume - signed_volume(sphere);
   EXPECT_NEAR(v.report.regions[0].volume, expected, 1e-9 * v.report.box_volume);
-  EXPECT_NEAR(v.report.box_volume, std::pow(6 + 8, 3), 1e-6);  // circumradius 3, margin 4
+  // The box: the polyhedron's bounding box (circumradius 3, less the inscribed shrink) and the margin of 4.
+  Vec3 lo = sphere.vertices[0], hi = lo;
+  for (const Vec3& p : sphere.vertices) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  EXPECT_NEAR(v.report.box_volume, (hi.x - lo.x + 8) * (hi.y - lo.y + 8) * (hi.z - lo.z + 8), 1e-9 * v.report.box_volume);
+  EXPECT_NEAR(v.report.box_volume, std::pow(6 + 8, 3), 1e-4);
   const MshFile file = parse(v.msh);
   EXPECT_EQ(file.by_type.at(4).size(), v.report.tetrahedra);
   // The surface is the boundary as it is: the same triangles, nothing remeshed.

@@ -143,4 +143,9 @@ class SurfaceCheckFailed : public Error {
 // max_sphere_faces (or cannot be built), SurfaceCheckFailed as above.
 ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options = {});
 
+// Throws molsurf::Error for a sphere (radius + probe) above 0 but under 2^-30 of its
+// centre's largest coordinate: its icosphere's corners would round together. compute_surface
+// checks it first; the exact areas (compute_areas) have no such limit.
+void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& spheres);
+
 }  // namespace molsurf

@@ -53,8 +53,10 @@ struct MeshCheck {
   bool manifold() const { return nonmanifold_edges == 0 && nonmanifold_vertices == 0; }
   bool oriented() const { return misoriented_edges == 0; }
   // No defect: closed, 2-manifold, consistently oriented outward, no degenerate face, no
-  // self-intersection, finite coordinates, area and volume. Contacts (touching without
-  // crossing) do not make it invalid. True for an empty mesh: see empty() and verdict().
+  // self-intersection, no contact (two sheets touching without crossing, at a point, along
+  // a segment or over an area: shells touching each other, or a surface touching itself,
+  // which a BEM or FEM mesher cannot use), finite coordinates, area and volume. True for an
+  // empty mesh: see empty() and verdict().
   bool valid() const;
   // One line per defect found, e.g. "3 boundary edges (a hole): faces 10 11 12".
   std::vector<std::string> defects() const;

@@ -125,6 +125,15 @@ int BooleanCommand::run() const {
   if (!ok) {
     std::string why;
     for (const std::string& defect : check.defects()) why += (why.empty() ? "" : "; ") + defect;
+    if (check.contact_pairs > 0 && !check.examples_contact.empty()) {
+      // Solids that meet without overlapping there: no valid surface holds both sheets.
+      const Triangle& t = r.mesh.faces[check.examples_contact.front()];
+      const Vec3 c = (1.0 / 3) * (r.mesh.vertices[t[0]] + r.mesh.vertices[t[1]] + r.mesh.vertices[t[2]]);
+      char where[160];
+      std::snprintf(where, sizeof where, " (A and B touch without overlapping near (%.6g, %.6g, %.6g): move one apart, or "
+                    "into the other)", c.x, c.y, c.z);
+      why += where;
+    }
     std::fprintf(stderr, "molsurf: error: %s: not written: the result failed its check: %s\n",
                  output.string().c_str(), why.c_str());
     return 1;

@@ -42,7 +42,7 @@ Icosahedron make_icosahedron() {
 // Class I geodesic subdivision of the unit icosahedron. Points on an icosahedron edge are
 // computed from the edge's canonical (lower, higher) corner order, so both faces that
 // share the edge use the same vertex.
-Mesh make_unit_icosphere(int n) {
+Mesh unit_icosphere(int n) {
   const Icosahedron ico = make_icosahedron();
   Mesh mesh;
   mesh.vertices.reserve(10 * n * n + 2);
@@ -96,13 +96,23 @@ Mesh make_unit_icosphere(int n) {
 Mesh make_icosphere(const Vec3& centre, double radius, const IcosphereOptions& options) {
   if (options.frequency < 1) throw std::invalid_argument("icosphere frequency must be at least 1");
   if (!(radius > 0)) throw std::invalid_argument("icosphere radius must be positive");
-  Mesh mesh = make_unit_icosphere(options.frequency);
-  double scale = radius;
-  if (options.area_corrected) scale *= std::sqrt(4 * std::numbers::pi / surface_area(mesh));
+  Mesh mesh = unit_icosphere(options.frequency);
+  const double scale = icosphere_scale(centre, radius, surface_area(mesh), options.area_corrected);
   for (Vec3& v : mesh.vertices) v = centre + v * scale;
   mesh.face_tags.assign(mesh.faces.size(), options.tag);
   if (options.tag == kNoTag) mesh.face_tags.clear();
   return mesh;
+}
+
+Mesh make_unit_icosphere(int frequency) {
+  if (frequency < 1) throw std::invalid_argument("icosphere frequency must be at least 1");
+  return unit_icosphere(frequency);
+}
+
+double icosphere_scale(const Vec3& centre, double radius, double unit_area, bool area_corrected) {
+  if (area_corrected) return radius * std::sqrt(4 * std::numbers::pi / unit_area);
+  const double reach = std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
+  return radius - (std::ldexp(radius, -30) + std::ldexp(reach, -48));
 }
 
 int frequency_for_density(double radius, double density) {

@@ -486,7 +486,7 @@ bool MeshCheck::valid() const {
   if (non_finite_vertices > 0 || non_finite_measures) return false;
   if (faces == 0) return true;  // no defect; verdict() says `empty`
   return closed() && manifold() && oriented() && degenerate_faces == 0 && duplicate_faces == 0 &&
-         intersecting_pairs == 0 && inward_components == 0;
+         intersecting_pairs == 0 && contact_pairs == 0 && inward_components == 0;
 }
 
 std::vector<std::string> MeshCheck::defects() const {
@@ -518,6 +518,9 @@ std::vector<std::string> MeshCheck::defects() const {
        "duplicate faces (same three vertices as another)", "faces", &none},
       {intersecting_pairs, "intersecting face pair (crossing or overlapping)",
        "intersecting face pairs (crossing or overlapping)", "faces", &examples_intersecting},
+      {contact_pairs, "touching face pair (two sheets meet without crossing: shells touching, or a surface touching itself)",
+       "touching face pairs (sheets meet without crossing: shells touching, or a surface touching itself)", "faces",
+       &examples_contact},
       {inward_components, "inward component (outer shell with negative volume)",
        "inward components (outer shells with negative volume)", "", &none},
   };

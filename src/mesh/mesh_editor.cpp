@@ -11,11 +11,14 @@ namespace molsurf {
 
 namespace {
 
-bool crossing(geometry::TrianglePairRelation r) { return r == geometry::TrianglePairRelation::intersecting; }
-// What an edit may not leave: a crossing, or a face on the same three corners as another.
-bool acceptable(geometry::TrianglePairRelation r) {
-  return r != geometry::TrianglePairRelation::intersecting && r != geometry::TrianglePairRelation::duplicate;
+// A crossing, or a contact (two faces touching without crossing): both are defects of a
+// surface (mesh_check.hpp), so the repairs count and remove both.
+bool crossing(geometry::TrianglePairRelation r) {
+  return r == geometry::TrianglePairRelation::intersecting || r == geometry::TrianglePairRelation::contact;
 }
+// What an edit may not leave: a crossing, a contact, or a face on the same three corners as
+// another.
+bool acceptable(geometry::TrianglePairRelation r) { return r == geometry::TrianglePairRelation::apart; }
 
 }  // namespace
 

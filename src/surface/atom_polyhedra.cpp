@@ -18,7 +18,7 @@ namespace {
 PolyhedronTemplate make_template(int frequency) {
   PolyhedronTemplate t;
   t.frequency = frequency;
-  t.unit = make_icosphere({0, 0, 0}, 1.0, {.frequency = frequency, .area_corrected = false});
+  t.unit = make_unit_icosphere(frequency);
   t.area = surface_area(t.unit);
   std::map<std::pair<Index, Index>, std::uint32_t> edge_id;
   t.face_edges.resize(t.unit.faces.size());
@@ -117,9 +117,8 @@ AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& o
   for (std::size_t i = 0; i < n; ++i) {
     const PolyhedronTemplate& t = templates_[template_of_[i]];
     centre_[i] = atoms[i].centre;
-    // As make_icosphere: the circumradius scaled so the area equals the sphere's.
-    scale_[i] = radius[i];
-    if (options.area_corrected) scale_[i] *= std::sqrt(4 * std::numbers::pi / t.area);
+    // As make_icosphere: area-corrected, or inscribed just inside the sphere.
+    scale_[i] = icosphere_scale(centre_[i], radius[i], t.area, options.area_corrected);
     // Unit vertices have length 1 within a few ulps; the margins cover that and the
     // rounding of centre + u * scale many times over.
     circumradius_[i] = scale_[i] * (1 + 1e-9) + 1e-9 * std::max({std::fabs(centre_[i].x), std::fabs(centre_[i].y),

@@ -185,6 +185,23 @@ SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::s
   return m;
 }
 
+void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& spheres) {
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    const Atom& a = atoms[i];
+    const double r = sphere_radius(a, spheres);
+    const double reach = std::max({std::fabs(a.centre.x), std::fabs(a.centre.y), std::fabs(a.centre.z)});
+    if (r > 0 && r < std::ldexp(reach, -30)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "atom %zu: its sphere's radius %.3g A is too small for its position (a coordinate of %.3g A): "
+                    "under 1e-9 of the coordinates, the icosphere's corners round together; move the structure "
+                    "near the origin, or use --areas-only (exact at any scale)",
+                    i, r, reach);
+      throw Error(text);
+    }
+  }
+}
+
 ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
   const auto start = std::chrono::steady_clock::now();
   // The van der Waals surface is the accessible one at probe 0.
@@ -194,6 +211,7 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
     options.spheres.probe = 0;
   }
   check_spheres(atoms, options.spheres);
+  check_sphere_resolution(atoms, options.spheres);
   // Before any sphere is built: a typo in the density must not run the machine out of memory.
   check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
   ComputedSurface result;
