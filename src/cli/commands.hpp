@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/resource_limits.hpp"
@@ -73,6 +74,24 @@ struct BooleanCommand {
   std::string operation;
   std::filesystem::path a, b, output;
   bool outer_only = false;  // union only: the outer envelope (open operands allowed)
+  bool quiet = false;
+
+  void add_options(CLI::App& app);
+  int run() const;
+};
+
+// molsurf batch: one molsurf job per structure of a list or directory, several at a time,
+// each in its own process (a failure, even a crash, is recorded and the rest go on),
+// resumable through a manifest in the output directory.
+struct BatchCommand {
+  std::filesystem::path input;  // a list file or a directory
+  std::filesystem::path output_directory;
+  int jobs = 0;                      // 0: one per core
+  std::string mesh;                  // a mesh format to write per structure (vtp, ply, ...); empty: numbers only
+  std::vector<std::string> options;  // passed to every job (after --)
+  double timeout = 0;                // seconds per job; 0: none
+  bool retry_failed = false;
+  bool progress = false;
   bool quiet = false;
 
   void add_options(CLI::App& app);

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
       "Usage:\n"
       "  molsurf [OPTIONS] STRUCTURE        surface of a .pdb .cif .pqr .xyzr file (.gz too)\n"
       "  molsurf check [OPTIONS] MESH       is a mesh a valid closed surface?\n"
-      "  molsurf boolean OP A B -o OUT      union | intersection | difference of two meshes",
+      "  molsurf boolean OP A B -o OUT      union | intersection | difference of two meshes\n"
+      "  molsurf batch LIST|DIR -o OUTDIR   every structure of a list or folder, several at a time",
       "molsurf"};
   app.set_version_flag("--version", "molsurf " MOLSURF_VERSION);
   app.require_subcommand(0, 1);
@@ -43,6 +44,14 @@ int main(int argc, char** argv) {
       "engine; prints the result's validation, area, volume and the time of each step.");
   boolean.add_options(*boolean_app);
 
+  BatchCommand batch;
+  CLI::App* batch_app = app.add_subcommand(
+      "batch",
+      "Run molsurf on every structure of a list or folder, several at a time, each in its own process:\n"
+      "a failure is recorded and the rest go on; a rerun skips what is done (manifest.tsv). Summary:\n"
+      "summary.csv and summary.jsonl in the output folder. Exit status 0 when none failed.");
+  batch.add_options(*batch_app);
+
   // Usage errors in one line, like every other error (CLI11_PARSE adds a second).
   try {
     app.parse(argc, argv);
@@ -61,6 +70,7 @@ int main(int argc, char** argv) {
   try {
     if (check_app->parsed()) return check.run();
     if (boolean_app->parsed()) return boolean.run();
+    if (batch_app->parsed()) return batch.run();
     if (surface.structure.empty()) {
       std::cerr << "molsurf: no structure file given\nRun with --help for more information.\n";
       return 2;
