@@ -36,7 +36,7 @@ void check_json(const std::vector<std::string>& names) {
   molsurf::io::JsonWriter writer;
   writer.begin_object();
   for (std::size_t i = 0; i < names.size(); ++i) writer.key(std::to_string(i)).value(names[i]);
-  writer.key(names.front()).value(true);
+  writer.key("name " + names.front()).value(true);  // a name as a key (never one of the digits above)
   writer.end_object();
   nlohmann::json parsed;
   try {
