@@ -579,7 +579,7 @@ py::object residue_table(const molsurf::Structure& s, const std::vector<double>&
   py::list dtype;
   dtype.append(py::make_tuple("chain", "U" + std::to_string(chain_width)));
   dtype.append(py::make_tuple("residue_name", "U" + std::to_string(name_width)));
-  dtype.append(py::make_tuple("residue_number", "i4"));
+  dtype.append(py::make_tuple("residue_number", "i8"));
   dtype.append(py::make_tuple("insertion_code", "U1"));
   dtype.append(py::make_tuple("atoms", "i8"));
   dtype.append(py::make_tuple("area", "f8"));
@@ -641,6 +641,10 @@ py::list component_shells_list(const SurfaceData& d) {
 }  // namespace
 
 PYBIND11_MODULE(molsurf, m) {
+  // A signal that ends the interpreter while a surface is written (SIGTERM from a job
+  // scheduler) must not leave the write's temporary; signals Python handles or ignores
+  // itself (SIGINT, SIGPIPE, SIGXFSZ) are left to it.
+  molsurf::remove_temporaries_on_signals();
   m.doc() =
       "Exact, watertight molecular surfaces (libmolsurf from Python).\n\n"
       "Lengths are in angstrom (A), areas in A^2, volumes in A^3. Arrays are NumPy arrays:\n"
@@ -687,7 +691,7 @@ PYBIND11_MODULE(molsurf, m) {
       .def_property_readonly(
           "residue_numbers",
           [](const PyStructure& s) {
-            return atom_column<std::int32_t>(*s.structure, [](auto& a) { return a.residue_number; });
+            return atom_column<std::int64_t>(*s.structure, [](auto& a) { return a.residue_number; });
           },
           "Residue sequence numbers, (N,) int32 (copy).")
       .def_property_readonly(

@@ -23,13 +23,14 @@ inline std::string read_text(const std::filesystem::path& path) {
 }
 
 // `arguments` is appended to the executable's path as is (quote paths yourself);
-// `shell_prefix` runs before it in the same shell (e.g. "ulimit -v 500000; ").
+// `shell_prefix` runs before it in the same shell (e.g. "ulimit -v 500000; ");
+// `stdout_redirection` replaces the capture of standard output (e.g. "> /dev/full", ">&-").
 inline CommandResult run_molsurf(const std::string& arguments, const std::filesystem::path& workdir,
-                                 const std::string& shell_prefix = "") {
+                                 const std::string& shell_prefix = "", const std::string& stdout_redirection = "") {
   const auto out = workdir / "stdout.txt", err = workdir / "stderr.txt";
+  const std::string capture = stdout_redirection.empty() ? "> '" + out.string() + "'" : stdout_redirection;
   const std::string command = "cd '" + workdir.string() + "' && " + shell_prefix + "'" MOLSURF_CLI_PATH "' " +
-                              arguments +
-                              " > '" + out.string() + "' 2> '" + err.string() + "' < /dev/null";
+                              arguments + " " + capture + " 2> '" + err.string() + "' < /dev/null";
   const int status = std::system(command.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

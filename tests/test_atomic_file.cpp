@@ -2,9 +2,14 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <stdlib.h>
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -202,12 +207,15 @@ TEST_F(AtomicFileTest, ASetReplacesItsTargetsOnlyWhenAllAreComplete) {
   }
 }
 
-// A process killed by SIGINT or SIGTERM in the middle of a write leaves no temporary.
+// A process ended by any catchable signal in the middle of a write leaves no temporary.
 TEST_F(AtomicFileTest, SignalsRemoveTemporaries) {
-  for (int signal_number : {SIGINT, SIGTERM}) {
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ, SIGXCPU, SIGALRM, SIGUSR1, SIGUSR2,
+                            SIGABRT, SIGVTALRM, SIGPROF}) {
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
+      const rlimit no_core{0, 0};
+      ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXFSZ, SIGABRT would dump one here
       molsurf::detail::remove_temporaries_on_signals();
       AtomicFile first(dir_ / "big.vtp");
       first.write(std::string(1 << 20, 'x'));
@@ -222,6 +230,102 @@ TEST_F(AtomicFileTest, SignalsRemoveTemporaries) {
     EXPECT_EQ(WTERMSIG(status), signal_number);
     EXPECT_EQ(entries(), 0u) << "temporaries left after signal " << signal_number;
   }
+}
+
+// The signal handler removes a temporary by its directory's descriptor, so a path longer
+// than PATH_MAX from the root (a deep working directory) is no exception.
+TEST_F(AtomicFileTest, SignalsRemoveTemporariesUnderPathsDeeperThanPathMax) {
+  const std::string component(200, 'd');
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (::chdir(dir_.c_str()) != 0) ::_exit(2);
+    for (int depth = 0; depth < 25; ++depth)  // 25 * 201 bytes: beyond 4096
+      if (::mkdir(component.c_str(), 0700) != 0 || ::chdir(component.c_str()) != 0) ::_exit(3);
+    molsurf::detail::remove_temporaries_on_signals();
+    AtomicFile file("deep.vtp");
+    file.write("half");
+    if (molsurf::detail::registered_temporaries() != 1) ::_exit(4);
+    ::raise(SIGTERM);
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "child exited with " << WEXITSTATUS(status);
+  // Walk down relative to each directory, as no absolute path reaches the bottom.
+  int fd = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY);
+  for (int depth = 0; depth < 25; ++depth) {
+    const int next = ::openat(fd, component.c_str(), O_RDONLY | O_DIRECTORY);
+    ::close(fd);
+    ASSERT_GE(next, 0) << depth;
+    fd = next;
+  }
+  DIR* bottom = ::fdopendir(fd);
+  ASSERT_NE(bottom, nullptr);
+  std::size_t left = 0;
+  while (const dirent* entry = ::readdir(bottom)) {
+    const std::string name = entry->d_name;
+    left += name != "." && name != "..";
+  }
+  ::closedir(bottom);
+  EXPECT_EQ(left, 0u) << "the temporary is still there";
+  ASSERT_EQ(std::system(("rm -rf '" + (dir_ / component).string() + "'").c_str()), 0);  // deeper than remove_all goes
+}
+
+// A name of 246..255 bytes is legal, but ".NAME.tmp-PID-N" would not be: the temporary is
+// then named by a hash, and the write succeeds.
+TEST_F(AtomicFileTest, LongTargetNamesGetAShortTemporaryName) {
+  for (std::size_t length : {200u, 245u, 246u, 251u, 255u}) {
+    const fs::path target = dir_ / std::string(length, 'n');
+    {
+      AtomicFile file(target);
+      const std::string temporary = file.temp_path().filename().string();
+      EXPECT_LE(temporary.size(), 255u) << length;
+      EXPECT_EQ(temporary.rfind(length < 240 ? "." + target.filename().string() + ".tmp-" : ".molsurf-", 0), 0u)
+          << temporary;
+      file.write("long");
+      file.commit();
+    }
+    EXPECT_EQ(slurp(target), "long") << length;
+    EXPECT_EQ(entries(), 1u) << length;
+    fs::remove(target);
+  }
+  EXPECT_THROW(AtomicFile(dir_ / std::string(256, 'n')), molsurf::Error);
+}
+
+// What SIGKILL leaves (it cannot be caught) is removed by the next write of the same
+// target, once the process in the name is gone; a live process's temporary is not.
+TEST_F(AtomicFileTest, StaleTemporariesOfDeadProcessesAreRemoved) {
+  const pid_t dead = ::fork();
+  ASSERT_GE(dead, 0);
+  if (dead == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(dead, nullptr, 0), dead);  // reaped: the PID names no process now
+  const std::string alive = std::to_string(::getppid());
+  const std::string gone = std::to_string(dead);
+  const std::string long_name(250, 'L');
+  const std::vector<std::string> stale{".out.vtp.tmp-" + gone + "-0", ".out.vtp.tmp-" + gone + "-12"};
+  const std::vector<std::string> kept{".out.vtp.tmp-" + alive + "-0",  // a live writer's
+                                      ".other.vtp.tmp-" + gone + "-0",  // another target's
+                                      ".out.vtp.tmp-" + gone + "-x",    // not our pattern
+                                      ".out.vtp.tmp-" + gone};
+  for (const std::string& name : stale) put(dir_ / name, "stale");
+  for (const std::string& name : kept) put(dir_ / name, "kept");
+  {
+    AtomicFile file(dir_ / "out.vtp");
+    file.write("new");
+    file.commit();
+  }
+  for (const std::string& name : stale) EXPECT_FALSE(fs::exists(dir_ / name)) << name;
+  for (const std::string& name : kept) EXPECT_TRUE(fs::exists(dir_ / name)) << name;
+  // Hashed temporaries of long names too.
+  {
+    AtomicFile probe(dir_ / long_name);
+    const std::string prefix = probe.temp_path().filename().string();
+    put(dir_ / (prefix.substr(0, prefix.find(".tmp-") + 5) + gone + "-3"), "stale");
+  }
+  const std::size_t before = entries();
+  molsurf::write_file_atomically(dir_ / long_name, "x");
+  EXPECT_EQ(entries(), before) << "the long name's stale temporary was not removed (one file added, one removed)";
 }
 
 TEST_F(AtomicFileTest, RegistryForgetsCommittedAndRemovedTemporaries) {

@@ -170,15 +170,24 @@ TEST(Cli, BooleanOfTwoMeshFiles) {
   EXPECT_EQ(check.exit_code, 0) << check.out;
 }
 
-TEST(Cli, BooleanOfDisjointSolidsIsAnEmptyIntersectionAndWritesNothing) {
-  // An empty mesh is no closed surface (`molsurf check` fails it), so there is no file.
+TEST(Cli, AnEmptyBooleanIsAnErrorThatWritesAndRemovesNothing) {
+  // An empty mesh is no closed surface (`molsurf check` fails it), so there is no file; and
+  // an older file at the output path must not pass for the result: exit 1, file untouched.
   TempDir dir;
   write_mesh(dir.path() / "a.ply", make_icosphere({0, 0, 0}, 1.0, {.frequency = 2}));
   write_mesh(dir.path() / "b.ply", make_icosphere({5, 0, 0}, 1.0, {.frequency = 2}));
-  const auto r = run_molsurf("boolean intersection a.ply b.ply -o i.off", dir.path());
-  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("empty (no faces): nothing written"), std::string::npos) << r.out;
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "i.off"));
+  write_mesh(dir.path() / "inside.ply", make_icosphere({0, 0, 0}, 0.5, {.frequency = 2}));
+  const std::string old_result = "an older result\n";
+  for (const std::string operation : {"intersection a.ply b.ply", "difference inside.ply a.ply"}) {
+    std::ofstream(dir.path() / "r.off") << old_result;
+    const auto r = run_molsurf("boolean " + operation + " -o r.off", dir.path());
+    EXPECT_EQ(r.exit_code, 1) << operation << r.out << r.err;
+    EXPECT_NE(r.err.find("r.off: not written: the " + operation.substr(0, operation.find(' '))), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("is empty (no faces)"), std::string::npos) << r.err;
+    EXPECT_EQ(testing::read_text(dir.path() / "r.off"), old_result) << operation;
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 4) << "a temporary was left";
+  }
 }
 
 TEST(Cli, BooleanRefusesAnInvalidOperand) {

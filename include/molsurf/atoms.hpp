@@ -23,7 +23,7 @@ struct Atom {
   std::string element;       // upper case, e.g. "C", "FE"
   std::string atom_name;     // e.g. "CA"
   std::string residue_name;  // e.g. "ALA", "HEM"
-  int residue_number = 0;
+  std::int64_t residue_number = 0;  // mmCIF allows any integer; no wrap at 32 bits
   char insertion_code = ' ';
   std::string chain;
   int serial = 0;            // atom serial number in the file (0 when the format has none)
@@ -33,6 +33,12 @@ struct Atom {
   bool hetero = false;
   Polarity polarity = Polarity::by_element;
 };
+
+// For formats whose residue number has 32 bits (VTK's Int32 cell array, gemmi's SeqId when
+// a structure is written back): the number clamped to that range.
+inline std::int32_t residue_number_32(std::int64_t number) {
+  return static_cast<std::int32_t>(number < INT32_MIN ? INT32_MIN : number > INT32_MAX ? INT32_MAX : number);
+}
 
 enum class StructureFormat { pdb, mmcif, pqr, xyzr };
 

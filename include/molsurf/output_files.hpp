@@ -30,7 +30,9 @@ struct OutputRequest {
 // a non-empty name; "-" only for a report, and for one output at most; not the same file
 // as an input or another output (compared as canonical paths, and by device and inode for
 // files that exist, so "./x", symbolic and hard links count); not a symbolic link,
-// directory, device, pipe or socket; in a directory that exists.
+// directory, device, pipe or socket; in a directory that exists; a name for which a
+// temporary can be made there (made and removed: a name too long for the file system or a
+// directory without write permission fails here, before any work).
 void check_output_paths(std::span<const std::filesystem::path> inputs, std::span<const OutputRequest> outputs);
 
 class OutputFiles {
@@ -49,9 +51,10 @@ class OutputFiles {
                         const MeshCheckOptions& check_options);
   void add_text(const std::filesystem::path& path, std::string content);  // "-": standard output
 
-  // Replaces every target (then prints what goes to standard output) and returns the
-  // files written, in order. On failure throws molsurf::Error naming what was written
-  // and what was not.
+  // Completes every temporary, writes what goes to standard output, then replaces every
+  // target, and returns the files written, in order. A temporary or standard output that
+  // cannot be written throws molsurf::Error with every target left as it was; a rename
+  // failing midway throws naming what was written and what was not.
   std::vector<std::filesystem::path> commit();
 
  private:
@@ -59,8 +62,10 @@ class OutputFiles {
   std::vector<std::string> standard_output_;
 };
 
-// Removes the temporaries of unfinished writes when SIGINT, SIGTERM or SIGHUP ends the
-// process. For programs (the molsurf command): a library does not take signals itself.
+// Removes the temporaries of unfinished writes when a signal ends the process (every
+// signal that can be caught and is at its default action: SIGINT, SIGTERM, SIGHUP, SIGXFSZ,
+// SIGPIPE, ...). For programs (the molsurf command) and the Python module at its import: the
+// library's calls do not take signals themselves.
 void remove_temporaries_on_signals();
 
 }  // namespace molsurf

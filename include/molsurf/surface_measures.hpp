@@ -46,7 +46,7 @@ std::vector<double> area_per_atom(const Mesh& mesh, std::size_t atom_count);
 struct ResidueArea {
   std::string chain;
   std::string residue_name;
-  int residue_number = 0;
+  std::int64_t residue_number = 0;  // mmCIF allows any integer; no wrap at 32 bits
   char insertion_code = ' ';
   std::size_t atoms = 0;  // atoms of the structure in this residue (buried ones too)
   double area = 0;        // square angstrom

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <optional>
@@ -104,14 +105,17 @@ SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);
 std::string format_surface_report(const SurfaceReport& report);
 std::string surface_report_json(const SurfaceReport& report);
 
-// CSV tables: one row per atom with its area, and one per residue; as text, or written
-// atomically to a file.
+// CSV tables (RFC 4180: a name holding a comma, quote or line break is quoted): one row
+// per atom with its area, and one per residue; as text, or written atomically to a file.
 std::string per_atom_csv(std::span<const Atom> atoms, std::span<const double> area);
 // With `relative`, a `relative` column: the residue's area over its type's maximum
 // (relative_area.hpp), empty for residues without one.
 std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double> area,
                             std::optional<MaxAreaScale> relative = std::nullopt);
 std::string per_chain_csv(std::span<const Atom> atoms, std::span<const double> area);
+// One of those tables with a leading `model` column (--all-models): "model" heads it (only
+// `with_header`: the first model's table), `model` starts each row.
+std::string csv_with_model_column(std::string_view csv, int model, bool with_header);
 void write_per_atom_csv(const std::filesystem::path& path, std::span<const Atom> atoms, std::span<const double> area);
 void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,
                            std::span<const double> area);

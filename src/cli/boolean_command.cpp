@@ -9,6 +9,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/report.hpp"
+#include "molsurf/standard_output.hpp"
 #include "molsurf/written_check.hpp"
 #include "cli/validators.hpp"
 
@@ -81,11 +82,11 @@ int BooleanCommand::run() const {
   if (!empty) written = check_as_written(output, r.mesh, computed, MeshWriteOptions{}, MeshCheckOptions{}, acceptable);
   const MeshCheck& check = written ? written->check : computed;
   const bool ok = !empty && acceptable(check);
-  std::vector<std::filesystem::path> written_files;
+  // The file goes to its temporary now and replaces the target only after the report is out.
+  std::optional<OutputFiles> files;
   if (ok) {
-    OutputFiles files;
-    files.add_mesh(output, r.mesh, written->options);
-    written_files = files.commit();
+    files.emplace();
+    files->add_mesh(output, r.mesh, written->options);
   }
   const bool open_result = ok && !check.valid();
   if (!quiet) {
@@ -113,15 +114,12 @@ int BooleanCommand::run() const {
                   "a two-sided sheet meets the rest (expected, not a defect)\n",
                   check.boundary_edges, check.nonmanifold_edges);
     if (written && !written->note.empty()) std::printf("note: %s\n", written->note.c_str());
-    if (ok) std::printf("written: %s\n", written_files.size() == 2
-                                              ? (written_files[0].string() + ", " + written_files[1].string()).c_str()
-                                              : written_files.front().string().c_str());
   }
-  if (empty) {
-    // An empty mesh is no closed surface (molsurf check fails it), so there is no file.
-    if (!quiet) std::printf("the result is empty (no faces): nothing written\n");
-    return 0;
-  }
+  if (empty)
+    // An empty mesh is no closed surface (molsurf check fails it): no file is made, and an
+    // older file at the output path must not pass for the result, so this is an error.
+    throw molsurf::Error(output.string() + ": not written: the " + boolean_op_name(op) + " of " + a.string() +
+                         " and " + b.string() + " is empty (no faces); an existing file there is left as it was");
   if (!ok) {
     std::string why;
     for (const std::string& defect : check.defects()) why += (why.empty() ? "" : "; ") + defect;
@@ -138,6 +136,12 @@ int BooleanCommand::run() const {
                  output.string().c_str(), why.c_str());
     return 1;
   }
+  flush_standard_output();  // the report reached standard output, or nothing is replaced
+  const std::vector<std::filesystem::path> written_files = files->commit();
+  if (!quiet)
+    std::printf("written: %s\n", written_files.size() == 2
+                                     ? (written_files[0].string() + ", " + written_files[1].string()).c_str()
+                                     : written_files.front().string().c_str());
   return 0;
 }
 

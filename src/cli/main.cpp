@@ -8,9 +8,11 @@
 #include "cli/commands.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
+#include "molsurf/standard_output.hpp"
 
 int main(int argc, char** argv) {
   using namespace molsurf::cli;
+  molsurf::guard_standard_streams();  // before anything opens a file
   use_large_pages();
   CLI::App app{
       "molsurf " MOLSURF_VERSION " - exact, watertight molecular surfaces.\n"
@@ -68,14 +70,18 @@ int main(int argc, char** argv) {
   // A Ctrl-C (or kill) while a file is being written leaves no temporary behind.
   molsurf::remove_temporaries_on_signals();
   try {
-    if (check_app->parsed()) return check.run();
-    if (boolean_app->parsed()) return boolean.run();
-    if (batch_app->parsed()) return batch.run();
-    if (surface.structure.empty()) {
+    const bool subcommand = check_app->parsed() || boolean_app->parsed() || batch_app->parsed();
+    if (surface.structure.empty() && !subcommand) {
       std::cerr << "molsurf: no structure file given\nRun with --help for more information.\n";
       return 2;
     }
-    return surface.run();
+    const int status = check_app->parsed()     ? check.run()
+                       : boolean_app->parsed() ? boolean.run()
+                       : batch_app->parsed()   ? batch.run()
+                                               : surface.run();
+    // The text report is output too: a report that did not reach standard output fails the run.
+    molsurf::flush_standard_output();
+    return status;
   } catch (const molsurf::Error& e) {
     std::cerr << "molsurf: error: " << e.what() << "\n";
     return 1;

@@ -22,6 +22,7 @@
 #include "molsurf/output_files.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/sasa_structure.hpp"
+#include "molsurf/standard_output.hpp"
 #include "molsurf/split_components.hpp"
 #include "molsurf/volume_mesh.hpp"
 #include "molsurf/written_check.hpp"
@@ -459,7 +460,10 @@ void add_surface_files(const SurfaceCommand& command, const std::filesystem::pat
 std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, const Mesh& surface, std::ostream& text,
                                                 OutputFiles& files) {
   if (command.volume_mesh.empty()) return std::nullopt;
-  if (!command.quiet) text << "volume mesh ..." << std::flush;
+  if (!command.quiet) {
+    text << "volume mesh ...";
+    flush_standard_output();
+  }
   VolumeMeshOptions options;
   options.box_margin = command.box_margin;
   options.box_size = command.volume_size;
@@ -491,25 +495,6 @@ void add_area_tables(const SurfaceCommand& command, std::span<const Atom> atoms,
   if (relative) report.residues = area_per_residue(atoms, atom_area);
 }
 
-// "model," before a CSV table's header and N, before each of its rows.
-std::string with_model_column(const std::string& csv, int model, bool header) {
-  std::string out;
-  std::size_t start = 0;
-  bool first = true;
-  while (start < csv.size()) {
-    const std::size_t end = csv.find('\n', start);
-    const std::string line = csv.substr(start, end - start);
-    if (first) {
-      if (header) out += "model," + line + "\n";
-    } else {
-      out += std::to_string(model) + "," + line + "\n";
-    }
-    first = false;
-    start = end == std::string::npos ? csv.size() : end + 1;
-  }
-  return out;
-}
-
 // --all-models: every model's numbers in the report, each model's rows in the tables under a
 // leading `model` column.
 void add_model_tables(const SurfaceCommand& command, std::span<const Structure> models,
@@ -535,10 +520,10 @@ void add_model_tables(const SurfaceCommand& command, std::span<const Structure> 
       report.relative = relative;
       if (relative) report.residues = area_per_residue(s.atoms, area);
     }
-    if (!command.per_atom.empty()) atoms_csv += with_model_column(per_atom_csv(s.atoms, area), m.model, k == 0);
+    if (!command.per_atom.empty()) atoms_csv += csv_with_model_column(per_atom_csv(s.atoms, area), m.model, k == 0);
     if (!command.per_residue.empty())
-      residues_csv += with_model_column(per_residue_csv(s.atoms, area, relative), m.model, k == 0);
-    if (!command.per_chain.empty()) chains_csv += with_model_column(per_chain_csv(s.atoms, area), m.model, k == 0);
+      residues_csv += csv_with_model_column(per_residue_csv(s.atoms, area, relative), m.model, k == 0);
+    if (!command.per_chain.empty()) chains_csv += csv_with_model_column(per_chain_csv(s.atoms, area), m.model, k == 0);
   }
   if (!command.per_atom.empty()) files.add_text(command.per_atom, atoms_csv);
   if (!command.per_residue.empty()) files.add_text(command.per_residue, residues_csv);
@@ -659,7 +644,8 @@ int SurfaceCommand::run() const {
   const std::uint64_t memory = max_memory_gb > 0 ? static_cast<std::uint64_t>(max_memory_gb * 1e9) : available_memory_bytes();
   if (estimate_resources(s.atoms, spheres).bytes > memory / 32) save_memory();
   const SpherePlan plan = plan_spheres(s.atoms, spheres);
-  if (!silent) text << format_read_report(s.report) << format_sphere_plan(plan, spheres) << std::flush;
+  if (!silent) text << format_read_report(s.report) << format_sphere_plan(plan, spheres);
+  flush_standard_output();  // shown before the long work, and a broken standard output stops it
 
   const ComputedSurface computed = compute_with_progress(s.atoms, surface_compute_options(*this), quiet, progress, out);
   if (!quiet)
@@ -709,6 +695,7 @@ int SurfaceCommand::run() const {
   add_json_depth(*this, s.atoms, atom_area, report);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   if (!formats.empty()) files.add_text(kStandardOutput, format_outputs(*this, s.atoms, atom_area, report));
+  flush_standard_output();  // the report so far reached standard output, or nothing is replaced
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!silent) print_summary(report, volume, volume_mesh, written_files, text);
   return 0;
@@ -745,7 +732,8 @@ int SurfaceCommand::run_areas_only() const {
                                                    : std::vector<Structure>{read_structure(structure, read_options(*this))};
   const Structure& s = models.front();
   report.seconds.read = seconds_since(read_start);
-  if (!silent) text << format_read_report(s.report) << std::flush;
+  if (!silent) text << format_read_report(s.report);
+  flush_standard_output();  // shown before the work, and a broken standard output stops it
   const ComputedAreas computed = compute_areas(s.atoms, spheres, threads);
   report.input = s.report;
   report.spheres = spheres;
@@ -766,6 +754,7 @@ int SurfaceCommand::run_areas_only() const {
   add_json_depth(*this, s.atoms, atom_area, report);
   if (!json.empty()) files.add_text(json, surface_report_json(report));
   if (!formats.empty()) files.add_text(kStandardOutput, format_outputs(*this, s.atoms, atom_area, report));
+  flush_standard_output();  // the report so far reached standard output, or nothing is replaced
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!silent) {
     text << "\n" << format_surface_report(report);
@@ -811,7 +800,8 @@ int SurfaceCommand::run_model_meshes() const {
   for (const Structure& s : models) outputs.push_back({model_output_path(output, s.report.model_used), "-o", true});
   check_output_paths(inputs, outputs);
   for (const Structure& s : models) check_sphere_resources(structure, s.atoms, spheres, max_faces);
-  if (!quiet) text << format_read_report(models.front().report) << std::flush;
+  if (!quiet) text << format_read_report(models.front().report);
+  flush_standard_output();
 
   MeshCheckOptions check_options;
   check_options.self_intersections = !skip_check;
@@ -862,6 +852,7 @@ int SurfaceCommand::run_model_meshes() const {
     report.models[k].faces = faces[k];
   }
   if (!json.empty()) files.add_text(json, surface_report_json(report));
+  flush_standard_output();  // the report so far reached standard output, or nothing is replaced
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!quiet) {
     text << "\n" << format_surface_report(report);

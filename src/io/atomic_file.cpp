@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "io/temporary_name.hpp"
 #include "io/temporary_registry.hpp"
 #include "molsurf/error.hpp"
 
@@ -45,15 +46,22 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   if (target_.filename().empty()) fail(target_, "cannot write: not a file name");
   check_replaceable(target_);
   const std::filesystem::path directory = target_.parent_path();
-  std::string prefix(".");
-  prefix.append(target_.filename().string()).append(".tmp-").append(std::to_string(::getpid())).append("-");
+  const std::string name = target_.filename().string();
+  // The temporary's name is short whatever the target's, so the target's own length is
+  // checked here: found at the final rename, it would come after all the work.
+  const long name_max = ::pathconf(directory.empty() ? "." : directory.c_str(), _PC_NAME_MAX);
+  if (name_max > 0 && name.size() > static_cast<std::size_t>(name_max))
+    fail(target_, "cannot write: File name too long (" + std::to_string(name.size()) + " bytes, more than the " +
+                      std::to_string(name_max) + " its file system allows)");
+  detail::remove_stale_temporaries(target_);
   // O_EXCL reserves the name: two threads or processes writing the same target each get
   // their own temporary, without a shared counter.
   for (int attempt = 0; attempt < kMaxNameAttempts; ++attempt) {
-    std::filesystem::path candidate = directory / (prefix + std::to_string(attempt));
+    const std::string temporary = detail::temporary_name(name, ::getpid(), attempt);
+    std::filesystem::path candidate = directory / temporary;
     // Registered before it exists, so no signal can fall between creation and
     // registration; unlinking a name that is not there yet is harmless.
-    const int slot = detail::register_temporary(candidate);
+    const int slot = detail::register_temporary(directory, temporary);
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
@@ -128,8 +136,12 @@ std::vector<std::filesystem::path> AtomicFileSet::targets() const {
   return result;
 }
 
+void AtomicFileSet::finish() {
+  for (const auto& file : files_) file->finish();
+}
+
 void AtomicFileSet::commit() {
-  for (const auto& file : files_) file->finish();  // every temporary complete first
+  finish();  // every temporary complete first
   for (std::size_t i = 0; i < files_.size(); ++i) {
     try {
       files_[i]->commit();

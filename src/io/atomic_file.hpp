@@ -3,8 +3,9 @@
 // target (same directory, so the final rename never crosses a file system) and is
 // renamed over the target by commit(); if the object dies uncommitted (an exception,
 // an early return) the temporary is removed and the old target is left untouched, and
-// if the process is interrupted (SIGINT, SIGTERM, SIGHUP, once
-// detail::remove_temporaries_on_signals() is installed) the temporary is removed too.
+// if a signal ends the process (once detail::remove_temporaries_on_signals() is
+// installed) the temporary is removed too. What SIGKILL leaves is removed by the next
+// AtomicFile of the same target (temporary_name.hpp).
 //
 // Only regular files are replaced: a target that is a symbolic link, a directory, a
 // device, a pipe or a socket is refused with a message (renaming over a link would
@@ -24,7 +25,9 @@ namespace molsurf {
 class AtomicFile {
  public:
   // Reserves a unique temporary name ".NAME.tmp-PID-N" beside `target` (created empty,
-  // exclusively, so concurrent writers never share one). Throws molsurf::Error naming
+  // exclusively, so concurrent writers never share one; a hash replaces NAME when the name
+  // would be too long), after removing the temporaries of `target` that dead processes
+  // left. Throws molsurf::Error naming
   // the target and the reason when the directory is missing or not writable, or the
   // target exists and is not a regular file.
   explicit AtomicFile(std::filesystem::path target);
@@ -70,6 +73,9 @@ void check_replaceable(const std::filesystem::path& target);
 class AtomicFileSet {
  public:
   AtomicFile& add(std::filesystem::path target);
+  // Completes every temporary (AtomicFile::finish); throws molsurf::Error, replacing
+  // nothing, when one cannot be written. commit() does this first anyway.
+  void finish();
   void commit();
   bool empty() const { return files_.empty(); }
   std::vector<std::filesystem::path> targets() const;

@@ -1,5 +1,6 @@
 #pragma once
-// A minimal streaming JSON writer for reports: objects, arrays, strings, numbers, booleans.
+// A minimal streaming JSON writer for reports: objects, arrays, strings (any bytes, as
+// json_string.hpp escapes them), numbers, booleans.
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -8,6 +9,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "io/json_string.hpp"
 
 namespace molsurf::io {
 
@@ -69,26 +72,7 @@ class JsonWriter {
     out_ += '\n';
     out_.append(2 * first_.size(), ' ');
   }
-  void write_string(std::string_view s) {
-    out_ += '"';
-    for (char c : s) {
-      switch (c) {
-        case '"': out_ += "\\\""; break;
-        case '\\': out_ += "\\\\"; break;
-        case '\n': out_ += "\\n"; break;
-        case '\t': out_ += "\\t"; break;
-        default:
-          if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out_ += buf;
-          } else {
-            out_ += c;
-          }
-      }
-    }
-    out_ += '"';
-  }
+  void write_string(std::string_view s) { append_json_string(out_, s); }
 
   std::string out_;
   std::vector<bool> first_;

@@ -79,7 +79,9 @@ long long parse_integer(std::string_view text, const path& file, std::size_t lin
 // Lines of a text file with their 1-based numbers; the trailing '\r' is dropped.
 class LineReader {
  public:
-  LineReader(const path& file, std::string text) : file_(file), text_(std::move(text)) {}
+  LineReader(const path& file, std::string text) : file_(file), text_(std::move(text)) {
+    text::normalize_text(text_);
+  }
   bool next(std::string_view& line);
   std::size_t line_number() const { return line_number_; }
   const path& file() const { return file_; }

@@ -4,6 +4,8 @@
 // Stored: double points (exact), area-weighted point normals, cell data "tag" and,
 // when atoms are given, "atom_serial", "residue_number", "residue_name", "chain" of
 // each face's atom. VTK writes to AtomicFile's temporary, never to the target itself.
+#include <cerrno>
+#include <cstring>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
@@ -102,7 +104,7 @@ vtkSmartPointer<vtkPolyData> to_polydata(const Mesh& mesh, const MeshWriteOption
     // check_writable guarantees tag is kNoTag or an atom index.
     const Atom* atom = tag >= 0 ? &options.atoms[static_cast<std::size_t>(tag)] : nullptr;
     serial->SetValue(f, atom ? atom->serial : 0);
-    residue_number->SetValue(f, atom ? atom->residue_number : 0);
+    residue_number->SetValue(f, atom ? residue_number_32(atom->residue_number) : 0);
     residue_name->SetValue(f, atom ? atom->residue_name : "");
     chain->SetValue(f, atom ? atom->chain : "");
   }
@@ -120,10 +122,14 @@ void write_with(vtkNew<Writer>& writer, AtomicFileSet& files, const path& file, 
   writer->AddObserver(vtkCommand::ErrorEvent, errors);
   writer->SetInputData(polydata);
   writer->SetFileName(output.temp_path().c_str());
+  errno = 0;
   const int written = writer->Write();
+  const int error_number = errno;
   if (written != 1 || writer->GetErrorCode() != 0 || !errors->messages.empty())
-    fail(file, "cannot write: " + (errors->messages.empty() ? std::string("VTK writer failed")
-                                                            : first_line(errors->messages)));
+    // The system's reason when there is one: VTK's own message names the temporary.
+    fail(file, "cannot write: " + (error_number != 0         ? std::string(std::strerror(error_number))
+                                   : errors->messages.empty() ? std::string("VTK writer failed")
+                                                              : first_line(errors->messages)));
 }
 
 }  // namespace

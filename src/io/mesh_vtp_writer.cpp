@@ -200,7 +200,7 @@ void write_vtp(AtomicFileSet& files, const path& file, const Mesh& mesh, const M
                                         bytes_of<std::int32_t>(faces, [&](std::size_t f) { return atom_of(f).serial; })));
       cell_data.push_back(numeric_array(
           "Int32", "residue_number", 1,
-          bytes_of<std::int32_t>(faces, [&](std::size_t f) { return atom_of(f).residue_number; })));
+          bytes_of<std::int32_t>(faces, [&](std::size_t f) { return residue_number_32(atom_of(f).residue_number); })));
       cell_data.push_back(
           string_array("residue_name", faces, [&](std::size_t f) -> const std::string& { return atom_of(f).residue_name; }));
       cell_data.push_back(string_array("chain", faces, [&](std::size_t f) -> const std::string& { return atom_of(f).chain; }));

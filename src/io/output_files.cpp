@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <optional>
 
@@ -11,6 +10,7 @@
 #include "io/mesh_formats.hpp"
 #include "io/temporary_registry.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/standard_output.hpp"
 
 namespace molsurf {
 
@@ -86,6 +86,9 @@ void check_output_paths(std::span<const fs::path> inputs, std::span<const Output
       std::error_code error;
       if (!fs::is_directory(directory, error))
         fail(file, "cannot write: directory " + quoted(directory) + " does not exist");
+      // A temporary made and removed: whatever would stop the write (a name too long, a
+      // read-only directory, no permission) stops the run now, before any work.
+      AtomicFile probe(file);
       taken.push_back({file, role, id});
     }
   }
@@ -119,11 +122,11 @@ void OutputFiles::add_text(const fs::path& path, std::string content) {
 }
 
 std::vector<fs::path> OutputFiles::commit() {
+  // Standard output is written between completing the files and replacing them: a report
+  // that cannot be written there is an error that leaves every old file as it was.
+  files_->finish();
+  for (const std::string& text : standard_output_) write_standard_output(text);
   files_->commit();
-  for (const std::string& text : standard_output_) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-  }
-  std::fflush(stdout);
   std::vector<fs::path> written = files_->targets();
   if (!standard_output_.empty()) written.emplace_back("(standard output)");
   return written;

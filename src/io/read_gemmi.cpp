@@ -9,6 +9,9 @@
 #include <cmath>
 #include <charconv>
 #include <exception>
+#include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -18,6 +21,7 @@
 #include <gemmi/mmread.hpp>
 
 #include "io/structure_readers.hpp"
+#include "io/text_fields.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/gemmi_structure.hpp"
 
@@ -97,7 +101,7 @@ bool has_gz_extension(const std::filesystem::path& path) {
 // Our own loop rather than gemmi's: gemmi sizes its buffer from the gzip trailer, which
 // a truncated file does not have, and then guesses aloud about sizes.
 std::string gunzip_file(const std::filesystem::path& path) {
-  const std::string compressed = read_text_file(path);
+  const std::string compressed = read_binary_file(path);
   std::string text;
   z_stream stream{};
   if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) fail(path, "cannot start gzip decompression");
@@ -129,7 +133,10 @@ std::string gunzip_file(const std::filesystem::path& path) {
 
   }
   inflateEnd(&stream);
-  if (status == Z_STREAM_END) return text;
+  if (status == Z_STREAM_END) {
+    text::normalize_text(text);
+    return text;
+  }
   if (status == Z_BUF_ERROR)
     fail(path, "truncated gzip file: the compressed data ends early (after " + std::to_string(text.size()) +
                    " bytes of text); download it again");
@@ -151,48 +158,134 @@ void check_mmcif_coordinates(const std::filesystem::path& path, gemmi::cif::Docu
                      " column: no Cartesian coordinates (fractional-only or incomplete files are not read)");
 }
 
+// gemmi reads an _atom_site table only when it has every column it treats as required, and
+// silently reads no atom otherwise; but occupancy, B-factor, label_asym_id and the other
+// columns below are optional for a surface (coordinate-only files from modelling tools lack
+// them). Each missing one is added, with gemmi's own default for an unknown value ('?':
+// occupancy 1, B-factor 50) or the value of its auth_/label_ twin.
+void add_missing_atom_site_columns(gemmi::cif::Block& block) {
+  struct Fill {
+    const char* tag;
+    const char* twin;      // a column whose value stands in, when present
+    const char* fallback;  // otherwise this value
+  };
+  constexpr Fill fills[] = {{"_atom_site.id", nullptr, "?"},
+                            {"_atom_site.type_symbol", nullptr, "?"},
+                            {"_atom_site.label_alt_id", nullptr, "."},
+                            {"_atom_site.label_asym_id", "_atom_site.auth_asym_id", "?"},
+                            {"_atom_site.occupancy", nullptr, "?"},
+                            {"_atom_site.B_iso_or_equiv", nullptr, "?"},
+                            {"_atom_site.auth_seq_id", "_atom_site.label_seq_id", "?"}};
+  for (gemmi::cif::Item& item : block.items) {
+    if (item.type != gemmi::cif::ItemType::Loop || item.loop.find_tag("_atom_site.Cartn_x") < 0) continue;
+    gemmi::cif::Loop& loop = item.loop;
+    for (const Fill& fill : fills) {
+      if (loop.find_tag(fill.tag) >= 0) continue;
+      const int twin = fill.twin ? loop.find_tag(fill.twin) : -1;
+      const std::size_t width = loop.width(), rows = loop.length();
+      std::vector<std::string> values;
+      values.reserve(rows * (width + 1));
+      for (std::size_t row = 0; row < rows; ++row) {
+        for (std::size_t column = 0; column < width; ++column) values.push_back(loop.val(row, column));
+        values.push_back(twin >= 0 ? loop.val(row, static_cast<std::size_t>(twin)) : std::string(fill.fallback));
+      }
+      loop.tags.emplace_back(fill.tag);
+      loop.values = std::move(values);
+    }
+    return;
+  }
+  // A single atom is written as tag-value pairs rather than a loop.
+  if (!block.find_value("_atom_site.Cartn_x")) return;
+  for (const Fill& fill : fills) {
+    if (block.find_value(fill.tag)) continue;
+    const std::string* twin = fill.twin ? block.find_value(fill.twin) : nullptr;
+    block.set_pair(fill.tag, twin ? *twin : std::string(fill.fallback));
+  }
+}
+
+// gemmi parses a residue number into an int and wraps one beyond 32 bits (3000000000 becomes
+// negative); mmCIF allows any integer. Each such number of _atom_site.auth_seq_id is
+// replaced by a stand-in that the file does not use (counted up from INT_MIN + 1: INT_MIN is
+// gemmi's "no number"), which keeps residues apart as the numbers did, and the map restores
+// the number in records_from_gemmi.
+WideResidueNumbers replace_wide_residue_numbers(gemmi::cif::Block& block) {
+  WideResidueNumbers wide;
+  gemmi::cif::Column column = block.find_values("_atom_site.auth_seq_id");
+  if (!column) return wide;
+  std::set<std::int64_t> used;
+  std::map<std::int64_t, int> stand_in;  // the file's number -> its stand-in
+  for (const std::string& value : column) {
+    const std::optional<std::int64_t> number = parse_int<std::int64_t>(trimmed(value));
+    if (!number) continue;
+    if (*number >= INT_MIN + 1 && *number <= INT_MAX) used.insert(*number);
+    else stand_in.emplace(*number, 0);
+  }
+  if (stand_in.empty()) return wide;
+  std::int64_t next = INT_MIN + 1;
+  for (auto& [number, replacement] : stand_in) {
+    while (used.contains(next)) ++next;
+    replacement = static_cast<int>(next++);
+    wide.emplace(replacement, number);
+  }
+  for (std::string& value : column) {
+    const std::optional<std::int64_t> number = parse_int<std::int64_t>(trimmed(value));
+    if (const auto found = number ? stand_in.find(*number) : stand_in.end(); found != stand_in.end())
+      value = std::to_string(found->second);
+  }
+  return wide;
+}
+
 }  // namespace
 
 namespace {
 
-gemmi::Structure read_gemmi_structure(const std::filesystem::path& path, StructureFormat format) {
+struct GemmiRead {
   gemmi::Structure structure;
+  WideResidueNumbers wide;
+};
+
+GemmiRead read_gemmi_structure(const std::filesystem::path& path, StructureFormat format) {
+  GemmiRead read;
   try {
     const std::string buffer = has_gz_extension(path) ? gunzip_file(path) : read_text_file(path);
     if (buffer.empty()) fail(path, "file is empty");
     if (format == StructureFormat::pdb) {
       check_pdb_atom_records(path, buffer);
-      structure = gemmi::read_pdb_from_memory(buffer.data(), buffer.size(), path.string());
+      read.structure = gemmi::read_pdb_from_memory(buffer.data(), buffer.size(), path.string());
     } else {
       gemmi::cif::Document document = gemmi::cif::read_memory(buffer.data(), buffer.size(), path.string().c_str());
       check_mmcif_coordinates(path, document);
-      structure = gemmi::make_structure(std::move(document));
+      add_missing_atom_site_columns(document.blocks.front());
+      read.wide = replace_wide_residue_numbers(document.blocks.front());
+      read.structure = gemmi::make_structure(std::move(document));
     }
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
     throw Error(message_with_file(path, e.what()));
   }
-  return structure;
+  return read;
 }
 
 }  // namespace
 
 ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
                              std::optional<int> model) {
-  return records_from_gemmi(read_gemmi_structure(path, format), path, model);
+  const GemmiRead read = read_gemmi_structure(path, format);
+  return records_from_gemmi(read.structure, path, model, read.wide);
 }
 
 std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format) {
-  const gemmi::Structure structure = read_gemmi_structure(path, format);
-  std::vector<ModelRecords> models{records_from_gemmi(structure, path, std::nullopt)};
+  const GemmiRead read = read_gemmi_structure(path, format);
+  std::vector<ModelRecords> models{records_from_gemmi(read.structure, path, std::nullopt, read.wide)};
   const std::vector<int> numbers = models.front().model_numbers;
-  for (std::size_t k = 1; k < numbers.size(); ++k) models.push_back(records_from_gemmi(structure, path, numbers[k]));
+  for (std::size_t k = 1; k < numbers.size(); ++k)
+    models.push_back(records_from_gemmi(read.structure, path, numbers[k], read.wide));
   return models;
 }
 
 ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& path,
-                                std::optional<int> model) {
+                                std::optional<int> model, const WideResidueNumbers& wide) {
   ModelRecords result;
   const gemmi::Model* chosen = nullptr;
   for (std::size_t i = 0; i < structure.models.size(); ++i) {
@@ -208,24 +301,28 @@ ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::fi
 
   for (const gemmi::Chain& chain : chosen->chains) {
     for (const gemmi::Residue& residue : chain.residues) {
+      const auto found = wide.find(residue.seqid.num.value);
+      const std::int64_t residue_number = !residue.seqid.num.has_value() ? 0
+                                          : found != wide.end()          ? found->second
+                                                                         : residue.seqid.num.value;
       for (const gemmi::Atom& atom : residue.atoms) {
         AtomRecord record;
         Atom& a = record.atom;
         a.centre = {atom.pos.x, atom.pos.y, atom.pos.z};
         if (!std::isfinite(a.centre.x) || !std::isfinite(a.centre.y) || !std::isfinite(a.centre.z))
           fail(path, "atom " + std::to_string(atom.serial) + " (" + residue.name + " " +
-                         std::to_string(residue.seqid.num.value) + " " + atom.name + ", chain " +
+                         std::to_string(residue_number) + " " + atom.name + ", chain " +
                          chain.name + ") has no valid coordinates");
         for (double c : {a.centre.x, a.centre.y, a.centre.z})
           check_coordinate_range(path, 0, c,
                                  "atom " + std::to_string(atom.serial) + " (" + residue.name + " " +
-                                     std::to_string(residue.seqid.num.value) + " " + atom.name + ", chain " +
+                                     std::to_string(residue_number) + " " + atom.name + ", chain " +
                                      chain.name + "): coordinate");
         a.atom_name = atom.name;
         a.residue_name = residue.name;
         a.element = atom.element == gemmi::El::X ? infer_element(atom.name, residue.name)
                                                  : std::string(atom.element.uname());
-        a.residue_number = residue.seqid.num.has_value() ? residue.seqid.num.value : 0;
+        a.residue_number = residue_number;
         a.insertion_code = residue.seqid.icode;
         a.chain = chain.name;
         a.serial = atom.serial;

@@ -4,6 +4,7 @@
 //   ATOM/HETATM serial name resName [chain] resSeq[icode] x y z charge radius
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -20,7 +21,7 @@ std::string upper(std::string_view s) {
 }
 
 struct ResidueNumber {
-  int number = 0;
+  std::int64_t number = 0;
   char insertion_code = ' ';
 };
 
@@ -31,7 +32,7 @@ std::optional<ResidueNumber> parse_residue_number(std::string_view field) {
     result.insertion_code = field.back();
     field.remove_suffix(1);
   }
-  const std::optional<int> number = parse_int(field);
+  const std::optional<std::int64_t> number = parse_int<std::int64_t>(field);
   if (!number) return std::nullopt;
   result.number = *number;
   return result;

@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "io/structure_readers.hpp"
+#include "io/text_fields.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/error.hpp"
 
@@ -29,16 +30,13 @@ std::optional<double> parse_double(std::string_view field) {
   return value;
 }
 
-std::optional<int> parse_int(std::string_view field) {
-  if (!field.empty() && field.front() == '+') field.remove_prefix(1);
-  int value = 0;
-  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (field.empty() || error != std::errc() || end != field.data() + field.size())
-    return std::nullopt;
-  return value;
+std::string read_text_file(const std::filesystem::path& path) {
+  std::string text = read_binary_file(path);
+  text::normalize_text(text);
+  return text;
 }
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_binary_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);

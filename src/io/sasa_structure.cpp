@@ -35,7 +35,7 @@ gemmi::Structure make_structure(std::span<const Atom> atoms, std::span<const dou
     const Atom& a = atoms[i];
     if (model.chains.empty() || model.chains.back().name != a.chain) model.chains.emplace_back(a.chain);
     gemmi::Chain& chain = model.chains.back();
-    const gemmi::SeqId seqid(a.residue_number, a.insertion_code);
+    const gemmi::SeqId seqid(residue_number_32(a.residue_number), a.insertion_code);
     if (chain.residues.empty() || chain.residues.back().seqid != seqid || chain.residues.back().name != a.residue_name) {
       gemmi::Residue r;
       r.name = a.residue_name;

@@ -2,8 +2,11 @@
 // Internal: the format readers behind read_structure(). Each reader turns a file into the
 // atom records of one model, unfiltered; selection and radii are decided in one place
 // (read_structure.cpp) so every format follows the same rules.
+#include <charconv>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,9 +38,12 @@ ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat 
                              std::optional<int> model);
 // Every model's records, the file parsed once (the first model first, then in file order).
 std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format);
+// gemmi keeps residue numbers in an int; a file's numbers beyond 32 bits are handed to it as
+// stand-ins (unused numbers) and restored from this map (stand-in -> the file's number).
+using WideResidueNumbers = std::map<int, std::int64_t>;
 // The records of one model of a structure gemmi holds in memory; `source` names it in messages.
 ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& source,
-                                std::optional<int> model);
+                                std::optional<int> model, const WideResidueNumbers& wide = {});
 ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model);
 // Spheres as given: x y z r [name]; radii are already set.
 std::vector<Atom> read_xyzr(const std::filesystem::path& path);
@@ -78,9 +84,21 @@ class DataLines {
   std::vector<std::string_view> fields_;
 };
 std::optional<double> parse_double(std::string_view field);  // whole field, finite, '+' allowed
-std::optional<int> parse_int(std::string_view field);        // whole field
+// A whole field as an integer of type Int ('+' allowed); nullopt when it is not one or
+// does not fit.
+template <class Int = int>
+std::optional<Int> parse_int(std::string_view field) {
+  if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+  Int value = 0;
+  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (field.empty() || error != std::errc() || end != field.data() + field.size()) return std::nullopt;
+  return value;
+}
 
 // The file's whole content; fails with a clear message when it cannot be read.
+std::string read_binary_file(const std::filesystem::path& path);
+// The same for a text file, normalised (text_fields.hpp: no byte-order mark, no CR-only
+// line ends).
 std::string read_text_file(const std::filesystem::path& path);
 
 // Element (upper case) from an atom name when the file gives none, following gemmi's rule

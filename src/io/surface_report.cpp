@@ -8,6 +8,7 @@
 #include <string>
 
 #include "io/atomic_file.hpp"
+#include "io/csv_field.hpp"
 #include "io/json_writer.hpp"
 #include "molsurf/report.hpp"
 
@@ -391,15 +392,23 @@ std::string surface_report_json(const SurfaceReport& r) {
   return j.str();
 }
 
+namespace {
+
+// A table's insertion code: '_' when blank, as MSMS's names have it.
+std::string insertion_field(char code) { return io::csv_field(std::string_view(code == ' ' ? "_" : &code, 1)); }
+
+}  // namespace
+
 std::string per_atom_csv(std::span<const Atom> atoms, std::span<const double> area) {
   std::string csv = "index,serial,chain,residue_name,residue_number,insertion_code,atom_name,element,radius,area\n";
-  char line[256];
+  char radius[32];
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom& a = atoms[i];
-    std::snprintf(line, sizeof line, "%zu,%d,%s,%s,%d,%c,%s,%s,%.3f,%s\n", i, a.serial, a.chain.c_str(),
-                  a.residue_name.c_str(), a.residue_number, a.insertion_code == ' ' ? '_' : a.insertion_code,
-                  a.atom_name.c_str(), a.element.c_str(), a.radius, exact_number(area[i]).c_str());
-    csv += line;
+    std::snprintf(radius, sizeof radius, "%.3f", a.radius);
+    csv += std::to_string(i) + ',' + std::to_string(a.serial) + ',' + io::csv_field(a.chain) + ',' +
+           io::csv_field(a.residue_name) + ',' + std::to_string(a.residue_number) + ',' +
+           insertion_field(a.insertion_code) + ',' + io::csv_field(a.atom_name) + ',' + io::csv_field(a.element) +
+           ',' + radius + ',' + exact_number(area[i]) + '\n';
   }
   return csv;
 }
@@ -412,15 +421,14 @@ std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double>
                             std::optional<MaxAreaScale> relative) {
   std::string csv = std::string("chain,residue_name,residue_number,insertion_code,atoms,area") +
                     (relative ? ",relative\n" : "\n");
-  char line[320];
   for (const ResidueArea& r : area_per_residue(atoms, area)) {
-    std::string rsa;
-    if (relative)
-      if (const std::optional<double> max = max_residue_area(r.residue_name, *relative)) rsa = exact_number(r.area / *max);
-    std::snprintf(line, sizeof line, "%s,%s,%d,%c,%zu,%s%s%s\n", r.chain.c_str(), r.residue_name.c_str(),
-                  r.residue_number, r.insertion_code == ' ' ? '_' : r.insertion_code, r.atoms,
-                  exact_number(r.area).c_str(), relative ? "," : "", rsa.c_str());
-    csv += line;
+    csv += io::csv_field(r.chain) + ',' + io::csv_field(r.residue_name) + ',' + std::to_string(r.residue_number) +
+           ',' + insertion_field(r.insertion_code) + ',' + std::to_string(r.atoms) + ',' + exact_number(r.area);
+    if (relative) {
+      csv += ',';
+      if (const std::optional<double> max = max_residue_area(r.residue_name, *relative)) csv += exact_number(r.area / *max);
+    }
+    csv += '\n';
   }
   return csv;
 }
@@ -428,8 +436,13 @@ std::string per_residue_csv(std::span<const Atom> atoms, std::span<const double>
 std::string per_chain_csv(std::span<const Atom> atoms, std::span<const double> area) {
   std::string csv = "chain,atoms,residues,area\n";
   for (const ChainArea& c : area_per_chain(atoms, area))
-    csv += c.chain + "," + std::to_string(c.atoms) + "," + std::to_string(c.residues) + "," + exact_number(c.area) + "\n";
+    csv += io::csv_field(c.chain) + "," + std::to_string(c.atoms) + "," + std::to_string(c.residues) + "," +
+           exact_number(c.area) + "\n";
   return csv;
+}
+
+std::string csv_with_model_column(std::string_view csv, int model, bool with_header) {
+  return io::prepend_csv_column(csv, "model", std::to_string(model), with_header);
 }
 
 void write_per_residue_csv(const std::filesystem::path& path, std::span<const Atom> atoms,

@@ -1,9 +1,11 @@
 #include "io/temporary_registry.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 #include <mutex>
 
@@ -18,41 +20,57 @@ static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs l
 
 // The registry itself: globals because a signal handler can reach nothing else.
 std::atomic<int> g_state[kTemporarySlots];
-char g_path[kTemporarySlots][kTemporaryPathBytes];
+int g_directory[kTemporarySlots];
+char g_name[kTemporarySlots][kTemporaryNameBytes];
 
-constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
-struct sigaction g_previous[sizeof kSignals / sizeof kSignals[0]];
+// Every signal whose default action ends the process and that a handler can catch
+// (SIGKILL and SIGSTOP cannot be; SIGTRAP belongs to debuggers).
+constexpr int kSignals[] = {SIGHUP,  SIGINT,  SIGQUIT,   SIGILL,  SIGABRT, SIGBUS, SIGFPE,
+                            SIGUSR1, SIGSEGV, SIGUSR2,   SIGPIPE, SIGALRM, SIGTERM, SIGXCPU,
+                            SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO,   SIGPWR,  SIGSYS};
+constexpr std::size_t kSignalCount = sizeof kSignals / sizeof kSignals[0];
+struct sigaction g_previous[kSignalCount];
 
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
+  const int saved_errno = errno;
   for (int slot = 0; slot < kTemporarySlots; ++slot)
-    if (g_state[slot].load(std::memory_order_acquire) == kReady) ::unlink(g_path[slot]);
-  // Give the signal back its previous disposition and deliver it again: the process ends
-  // (or the previous handler runs) exactly as it would have without us.
-  for (std::size_t i = 0; i < sizeof kSignals / sizeof kSignals[0]; ++i)
+    if (g_state[slot].load(std::memory_order_acquire) == kReady) ::unlinkat(g_directory[slot], g_name[slot], 0);
+  // Give the signal back its previous disposition and deliver it again: it is blocked until
+  // this handler returns, and then ends the process exactly as it would have without us.
+  for (std::size_t i = 0; i < kSignalCount; ++i)
     if (kSignals[i] == signal_number) ::sigaction(signal_number, &g_previous[i], nullptr);
   ::raise(signal_number);
+  errno = saved_errno;
 }
 
 }  // namespace
 
-int register_temporary(const std::filesystem::path& path) noexcept {
-  std::error_code error;
-  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
-  if (error) return -1;
-  const std::string& text = absolute.native();
-  if (text.size() + 1 > kTemporaryPathBytes) return -1;
+int register_temporary(const std::filesystem::path& directory, std::string_view name) noexcept {
+  if (name.size() + 1 > kTemporaryNameBytes) return -1;
+  const int fd = ::open(directory.empty() ? "." : directory.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return -1;
   for (int slot = 0; slot < kTemporarySlots; ++slot) {
     int expected = kFree;
     if (!g_state[slot].compare_exchange_strong(expected, kWriting, std::memory_order_acq_rel)) continue;
-    std::memcpy(g_path[slot], text.c_str(), text.size() + 1);
+    g_directory[slot] = fd;
+    std::memcpy(g_name[slot], name.data(), name.size());
+    g_name[slot][name.size()] = '\0';
     g_state[slot].store(kReady, std::memory_order_release);
     return slot;
   }
+  ::close(fd);
   return -1;
 }
 
 void unregister_temporary(int slot) noexcept {
-  if (slot >= 0 && slot < kTemporarySlots) g_state[slot].store(kFree, std::memory_order_release);
+  if (slot < 0 || slot >= kTemporarySlots) return;
+  const int fd = g_directory[slot];
+  // Claimed before the descriptor is closed, so no other registration can reuse the slot
+  // while it still names the old directory.
+  int expected = kReady;
+  if (!g_state[slot].compare_exchange_strong(expected, kWriting, std::memory_order_acq_rel)) return;
+  ::close(fd);
+  g_state[slot].store(kFree, std::memory_order_release);
 }
 
 int registered_temporaries() noexcept {
@@ -64,10 +82,10 @@ int registered_temporaries() noexcept {
 void remove_temporaries_on_signals() {
   static std::once_flag installed;
   std::call_once(installed, [] {
-    for (std::size_t i = 0; i < sizeof kSignals / sizeof kSignals[0]; ++i) {
+    for (std::size_t i = 0; i < kSignalCount; ++i) {
       struct sigaction current {};
       if (::sigaction(kSignals[i], nullptr, &current) != 0) continue;
-      if (current.sa_handler == SIG_IGN) continue;  // e.g. SIGHUP under nohup: stay ignored
+      if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler != SIG_DFL) continue;
       g_previous[i] = current;
       struct sigaction action {};
       action.sa_handler = remove_temporaries_and_reraise;

@@ -151,7 +151,7 @@ std::vector<ResidueArea> area_per_residue(std::span<const Atom> atoms, std::span
   if (atom_area.size() != atoms.size())
     throw std::invalid_argument("area_per_residue: " + std::to_string(atom_area.size()) + " areas for " +
                                 std::to_string(atoms.size()) + " atoms");
-  using Key = std::tuple<std::string, int, char, std::string>;
+  using Key = std::tuple<std::string, std::int64_t, char, std::string>;
   std::map<Key, std::size_t> index;
   std::vector<ResidueArea> rows;
   for (std::size_t i = 0; i < atoms.size(); ++i) {
