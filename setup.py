@@ -65,6 +65,7 @@ class CMakeBuild(build_ext):
 
 
 version, description = cmake_project()
-setup(version=version, description=description,
+# One extension module and no Python packages (no search of the source tree for any).
+setup(version=version, description=description, packages=[], py_modules=[],
       ext_modules=[Extension("molsurf", sources=[])],
       cmdclass={"build_ext": CMakeBuild})
