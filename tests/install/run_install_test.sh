@@ -53,7 +53,9 @@ if [[ -z $python ]]; then
 fi
 
 step "pip install --no-build-isolation $src (MOLSURF_BUILD_DIR=$build)"
-"$python" -m venv --system-site-packages venv
+# Debian's pip (python3-pip, seen through --system-site-packages) installs into the venv
+# that runs it: the same pip as the venv's own, without the seconds ensurepip takes.
+"$python" -m venv --system-site-packages --without-pip venv
 MOLSURF_BUILD_DIR=$build venv/bin/python -m pip install -q --no-build-isolation --no-index \
   --disable-pip-version-check "$src"
 # The module from the venv, its version the project's everywhere, the library's numbers.
