@@ -23,8 +23,11 @@ step() { echo "== ${SECONDS}s: $*"; }
 step "cmake --install $build --prefix $work/prefix"
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null
-for f in bin/molsurf lib/libmolsurf.a lib/cmake/molsurf/molsurfConfig.cmake \
-         lib/cmake/molsurf/molsurfConfigVersion.cmake lib/cmake/molsurf/molsurfTargets.cmake; do
+# The library folder is GNUInstallDirs' (lib, or lib/<multiarch> for the prefix /usr).
+libdir=$(cd "$prefix" && find . -name libmolsurf.a -printf '%h\n' | sed 's|^\./||')
+[[ -n $libdir ]] || fail "not installed: libmolsurf.a"
+for f in bin/molsurf "$libdir"/cmake/molsurf/molsurfConfig.cmake "$libdir"/cmake/molsurf/molsurfConfigVersion.cmake \
+         "$libdir"/cmake/molsurf/molsurfTargets.cmake; do
   [[ -f $prefix/$f ]] || fail "not installed: $f"
 done
 # Every public header, and nothing of theirs from outside include/molsurf (src/ is not installed).
@@ -38,7 +41,7 @@ fi
 step "find_package(molsurf) consumer"
 cmake -S "$src/tests/install/consumer" -B consumer -G Ninja -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$prefix" >consumer.log || { cat consumer.log; fail "consumer: configure"; }
-grep -qx "molsurf_DIR:PATH=$prefix/lib/cmake/molsurf" consumer/CMakeCache.txt ||
+grep -qx "molsurf_DIR:PATH=$prefix/$libdir/cmake/molsurf" consumer/CMakeCache.txt ||
   fail "the consumer found another molsurf: $(grep molsurf_DIR consumer/CMakeCache.txt)"
 cmake --build consumer >>consumer.log || { cat consumer.log; fail "consumer: build"; }
 read -r consumer_version consumer_area consumer_faces < <(consumer/consumer "$src/data/pdb/1crn.pdb" 1crn.vtp)
