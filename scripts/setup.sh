@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs molsurf's system dependencies (Debian 12, idempotent) and builds the release preset,
 # the Python module included (build/release/python; Debian's python3-gemmi is gemmi-dev's version,
-# which lets gemmi.Structure objects pass to molsurf without a file).
+# which lets gemmi.Structure objects pass to molsurf without a file; venv, pip, setuptools and
+# wheel let the ctest `install` pip-install the module offline).
 # Usage: scripts/setup.sh [release|debug]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,6 +13,7 @@ packages=(build-essential cmake ninja-build pkg-config
   googletest libgtest-dev nlohmann-json3-dev libgmp-dev libmpfr-dev libcgal-dev libmimalloc-dev
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-gemmi
   python3-matplotlib python3-meshio python3-mdtraj
+  python3-venv python3-pip python3-setuptools python3-wheel
   gmsh libgmsh-dev tetgen xvfb python3-vtk9 freesasa)
 
 missing=()
