@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
       std::cerr << "molsurf: no structure file given\nRun with --help for more information.\n";
       return 2;
     }
+    surface.cap_threads();
     return surface.run();
   } catch (const molsurf::Error& e) {
     std::cerr << "molsurf: error: " << e.what() << "\n";

@@ -1,5 +1,9 @@
 #include "molsurf/compute_areas.hpp"
 
+#include <cstdio>
+
+#include "io/coordinate_range.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -11,16 +15,22 @@
 namespace molsurf {
 
 void check_spheres(std::span<const Atom> atoms, const SphereOptions& spheres) {
+  auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return std::string(text);
+  };
   if (!std::isfinite(spheres.probe) || spheres.probe < 0)
-    throw Error("probe radius " + std::to_string(spheres.probe) + ": not a finite number of zero or more");
+    throw Error("probe radius " + number(spheres.probe) + ": not a finite number of zero or more");
+  // The readers' bounds (coordinate_range.hpp), for atoms that come from no file.
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom& a = atoms[i];
-    const Vec3& c = a.centre;
-    for (const double x : {c.x, c.y, c.z})
-      if (!std::isfinite(x)) throw Error("atom " + std::to_string(i) + ": a coordinate is not a finite number");
-    if (!std::isfinite(a.radius) || a.radius < 0)
-      throw Error("atom " + std::to_string(i) + ": radius " + std::to_string(a.radius) +
-                  " is not a finite number of zero or more");
+    const std::string atom = "atom " + std::to_string(i + 1) + " (counting from 1)";
+    for (const double x : {a.centre.x, a.centre.y, a.centre.z})
+      detail::check_coordinate_range("atoms", 0, x, atom + ": coordinate");
+    if (!std::isfinite(a.radius) || a.radius < 0 || a.radius >= detail::kMaxCoordinate)
+      throw Error("atoms: " + atom + ": radius " + number(a.radius) +
+                  " is not a finite number of zero or more below 1e16");
   }
 }
 
