@@ -17,6 +17,7 @@
 #include <functional>
 #include <numbers>
 #include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "molsurf/io.hpp"
@@ -44,19 +45,27 @@ struct Off {
   }
 };
 
-// An n-gon prism of the given radius and length along z, caps as single n-gon faces.
-Off prism(int n, double radius, double length) {
+// An n-gon prism of the given radius and length along z, caps as single n-gon faces, or
+// (`fanned`) as the file's own fan of triangles from one corner.
+Off prism(int n, double radius, double length, bool fanned = false) {
   Off off;
   for (const double z : {0.0, length})
     for (int k = 0; k < n; ++k) {
       const double angle = 2 * std::numbers::pi * k / n;
       off.vertex(radius * std::cos(angle), radius * std::sin(angle), z);
     }
-  std::string bottom = std::to_string(n), top = std::to_string(n);
-  for (int k = n - 1; k >= 0; --k) bottom += " " + std::to_string(k);
-  for (int k = 0; k < n; ++k) top += " " + std::to_string(n + k);
-  off.faces += bottom + "\n" + top + "\n";
-  off.face_count += 2;
+  if (fanned) {
+    for (std::size_t k = 1; k + 1 < static_cast<std::size_t>(n); ++k) {
+      off.face({0, k + 1, k});
+      off.face({std::size_t(n), n + k, n + k + 1});
+    }
+  } else {
+    std::string bottom = std::to_string(n), top = std::to_string(n);
+    for (int k = n - 1; k >= 0; --k) bottom += " " + std::to_string(k);
+    for (int k = 0; k < n; ++k) top += " " + std::to_string(n + k);
+    off.faces += bottom + "\n" + top + "\n";
+    off.face_count += 2;
+  }
   for (int k = 0; k < n; ++k) {
     const std::size_t a = k, b = (k + 1) % n;
     off.face({a, b, b + n, a + n});
@@ -64,20 +73,20 @@ Off prism(int n, double radius, double length) {
   return off;
 }
 
-// `count` regular tetrahedra: in a row, 3 apart (disjoint boxes), or nested, each scaled
-// 1 % beyond the previous around one centre (disjoint surfaces, every face's box holding
-// the smaller copies).
+// `count` regular tetrahedra: in a row, 3 apart (disjoint boxes), or nested around one
+// centre, each 1 % of the first's size beyond the previous (disjoint surfaces, every face's
+// box holding the smaller copies; every other one a cavity, facing inward).
 Off tetrahedra(int count, bool nested) {
   Off off;
   const double corners[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
   for (int c = 0; c < count; ++c) {
-    const double scale = nested ? std::pow(1.01, c) : 1.0, shift = nested ? 0.0 : 3.0 * c;
+    const double scale = nested ? 1 + 0.01 * c : 1.0, shift = nested ? 0.0 : 3.0 * c;
+    const bool inward = nested && (count - 1 - c) % 2 == 1;
     const std::size_t first = off.vertex_count;
     for (const auto& p : corners) off.vertex(scale * p[0] + shift, scale * p[1], scale * p[2]);
-    off.face({first + 0, first + 1, first + 2});
-    off.face({first + 0, first + 3, first + 1});
-    off.face({first + 0, first + 2, first + 3});
-    off.face({first + 1, first + 3, first + 2});
+    const std::size_t faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    for (const auto& f : faces)
+      inward ? off.face({first + f[0], first + f[2], first + f[1]}) : off.face({first + f[0], first + f[1], first + f[2]});
   }
   return off;
 }
@@ -112,8 +121,11 @@ int main(int argc, char** argv) {
               omp_get_max_threads());
   for (const int n : {250, 1000, 4000})
     row("pencil (n-gon prism, radius 0.5, length 200)", "n = " + std::to_string(n), prism(n, 0.5, 200));
+  for (const int n : {250, 1000, 4000})
+    row("pencil, caps fanned in the file", "n = " + std::to_string(n), prism(n, 0.5, 200, true));
   for (const int count : {250, 1000, 4000}) row("tetrahedra in a row", std::to_string(count), tetrahedra(count, false));
-  for (const int count : {250, 1000, 4000}) row("nested tetrahedra", std::to_string(count), tetrahedra(count, true));
-  for (const int n : quick ? std::initializer_list<int>{1000, 10000} : std::initializer_list<int>{1000, 10000, 100000})
+  for (const int count : {250, 1000, 2000}) row("nested tetrahedra", std::to_string(count), tetrahedra(count, true));
+  const std::vector<int> caps = quick ? std::vector<int>{1000, 10000} : std::vector<int>{1000, 10000, 100000};
+  for (const int n : caps)
     row("prism with an n-gon cap (radius 10, length 1)", "n = " + std::to_string(n), prism(n, 10, 1));
 }

@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include "io/coordinate_range.hpp"
-
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -22,15 +20,17 @@ void check_spheres(std::span<const Atom> atoms, const SphereOptions& spheres) {
   };
   if (!std::isfinite(spheres.probe) || spheres.probe < 0)
     throw Error("probe radius " + number(spheres.probe) + ": not a finite number of zero or more");
-  // The readers' bounds (coordinate_range.hpp), for atoms that come from no file.
+  // Atoms that come from no file (Python, a library caller): what exact predicates cannot
+  // take. The readers' tighter bound (coordinate_range.hpp) is theirs and the Python
+  // module's; beyond it a surface is computed and, where doubles no longer resolve the
+  // spheres, fails its check (SurfaceCheckFailed).
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom& a = atoms[i];
-    const std::string atom = "atom " + std::to_string(i + 1) + " (counting from 1)";
+    const std::string atom = "atoms: atom " + std::to_string(i + 1) + " (counting from 1)";
     for (const double x : {a.centre.x, a.centre.y, a.centre.z})
-      detail::check_coordinate_range("atoms", 0, x, atom + ": coordinate");
-    if (!std::isfinite(a.radius) || a.radius < 0 || a.radius >= detail::kMaxCoordinate)
-      throw Error("atoms: " + atom + ": radius " + number(a.radius) +
-                  " is not a finite number of zero or more below 1e16");
+      if (!std::isfinite(x)) throw Error(atom + ": coordinate " + number(x) + " is not a finite number");
+    if (!std::isfinite(a.radius) || a.radius < 0)
+      throw Error(atom + ": radius " + number(a.radius) + " is not a finite number of zero or more");
   }
 }
 
