@@ -15,7 +15,7 @@ int main(int argc, char** argv){
   double t1=std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count();
   auto& st=r.stats;
   printf("atoms %zu dup %zu pairs %zu faces_in %zu inside %zu whole %zu cut %zu crossings %zu open %zu out %zu verts %zu trim %.3f join %.3f total %.3f\n",
-    st.atoms, st.duplicate_atoms, st.neighbour_pairs, st.faces_in, st.faces_inside, st.faces_whole, st.faces_cut, st.crossings, st.open_edges, r.mesh.faces.size(), r.mesh.vertices.size(), st.seconds_trim, st.seconds_join, t1);
+    st.atoms, st.contained_atoms, st.neighbour_pairs, st.faces_in, st.faces_inside, st.faces_whole, st.faces_cut, st.crossings, st.open_edges, r.mesh.faces.size(), r.mesh.vertices.size(), st.seconds_trim, st.seconds_join, t1);
   printf("area %.12g volume %.12g\n", surface_area(r.mesh), signed_volume(r.mesh));
   if (getenv("PAIR")) {
     SurfaceOptions o; o.spheres=so; o.threads=threads; o.method=SurfaceMethod::pairwise;

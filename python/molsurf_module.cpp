@@ -11,6 +11,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <span>
+#include <thread>
 #include <exception>
 #include <cmath>
 #include <cstdint>
@@ -29,6 +33,7 @@
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/boolean.hpp"
+#include "molsurf/cancel.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
@@ -40,6 +45,7 @@
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
+#include "molsurf/threads.hpp"
 #include "molsurf/written_check.hpp"
 
 namespace py = pybind11;
@@ -149,9 +155,28 @@ std::string shape_text(const py::array& a) {
   return text + (a.ndim() == 1 ? ",)" : ")");
 }
 
+// Numbers only, and no masked entries: NumPy would otherwise convert booleans, drop the
+// imaginary part of complex numbers, parse text, truncate float indices and read masked
+// entries' hidden values, all silently. Integer targets (indices, tags) take integers only.
 template <class T>
 py::array_t<T, py::array::c_style | py::array::forcecast> as_array(py::handle value, const char* name) {
-  auto array = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(value);
+  const py::module_ numpy = py::module_::import("numpy");
+  if (numpy.attr("ma").attr("is_masked")(value).cast<bool>())
+    throw Error(std::string(name) + ": the array has masked entries (numpy.ma); fill or drop them first");
+  py::array plain;
+  try {
+    plain = numpy.attr("asarray")(value);
+  } catch (const py::error_already_set&) {
+    throw Error(std::string(name) + ": not convertible to a numeric array");
+  }
+  const char kind = plain.dtype().kind();
+  const bool integers = std::is_integral_v<T>;
+  if (integers ? kind != 'i' && kind != 'u' : kind != 'i' && kind != 'u' && kind != 'f')
+    throw Error(std::string(name) + ": not convertible to a numeric array: its elements are " +
+                py::str(plain.dtype()).cast<std::string>() +
+                (integers ? " (expected integers)" : " (expected integers or floats; booleans, complex numbers, "
+                                                     "text and objects are refused)"));
+  auto array = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(plain);
   if (!array) throw Error(std::string(name) + ": not convertible to a numeric array");
   return array;
 }
@@ -177,10 +202,18 @@ molsurf::Mesh mesh_from_arrays(py::handle vertices, py::handle faces, py::handle
     mesh.faces[i / 3][i % 3] = static_cast<molsurf::Index>(index[i]);
   }
   if (!tags.is_none()) {
-    const auto t = as_array<std::int32_t>(tags, "tags");
+    // Read as 64 bits, so that a tag beyond 32 bits is refused rather than wrapped.
+    const auto t = as_array<std::int64_t>(tags, "tags");
     if (t.ndim() != 1 || static_cast<std::size_t>(t.shape(0)) != face_count)
       throw Error("tags: expected one per face, shape (" + std::to_string(face_count) + ",), got " + shape_text(t));
-    mesh.face_tags.assign(t.data(), t.data() + face_count);
+    mesh.face_tags.resize(face_count);
+    for (std::size_t i = 0; i < face_count; ++i) {
+      const std::int64_t tag = t.data()[i];
+      if (tag < std::numeric_limits<std::int32_t>::min() || tag > std::numeric_limits<std::int32_t>::max())
+        throw Error("tags: tags[" + std::to_string(i) + "] is " + std::to_string(tag) +
+                    ", beyond 32 bits; a tag is an atom index or -1");
+      mesh.face_tags[i] = static_cast<std::int32_t>(tag);
+    }
   }
   return mesh;
 }
@@ -319,10 +352,15 @@ std::shared_ptr<const molsurf::Structure> atoms_argument(py::object structure, p
   return read_atoms(structure, options());
 }
 
-void check_probe_and_threads(double probe, int threads) {
-  // The command's bounds (--probe, --threads).
+// The command's bounds (--probe, --threads); the thread count capped, with a warning, at
+// what this process can start (startable_threads, as the command does).
+int checked_probe_and_threads(double probe, int threads) {
   if (!(probe >= 0 && probe <= 1e15)) throw Error("probe: must be a finite number from 0 to 1e15 (angstrom)");
   if (threads < 0 || threads > 1024) throw Error("threads: must be 0 (all cores) to 1024");
+  const molsurf::ThreadCount count = molsurf::startable_threads(threads);
+  if (!count.note.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, ("threads: " + count.note).c_str(), 1) != 0)
+    throw py::error_already_set();
+  return count.threads;
 }
 
 molsurf::SurfaceKind surface_kind(const std::string& name) {
@@ -332,20 +370,54 @@ molsurf::SurfaceKind surface_kind(const std::string& name) {
   throw Error("surface: must be 'sas', 'ses' or 'vdw', not '" + name + "'");
 }
 
+// Runs `work` (given a cancel flag) on a worker thread while this thread, which holds the
+// GIL, looks for signals every 50 ms with the GIL released in between, so other Python
+// threads run meanwhile. Python handles signals on the main thread only, between
+// bytecodes: a computation on the main thread would see Ctrl-C only when it returns. On a
+// signal the flag is set, the library stops within its current loop step (Cancelled),
+// and the signal's exception (KeyboardInterrupt) is raised here.
+void run_interruptibly(const std::function<void(const molsurf::CancelFlag&)>& work) {
+  molsurf::CancelFlag cancel{false};
+  std::mutex mutex;
+  std::condition_variable finished_signal;
+  bool finished = false;
+  std::exception_ptr failure;
+  std::thread worker([&] {
+    try {
+      work(cancel);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    const std::lock_guard lock(mutex);
+    finished = true;
+    finished_signal.notify_all();
+  });
+  bool interrupted = false;
+  while (true) {
+    {
+      py::gil_scoped_release release;
+      std::unique_lock lock(mutex);
+      if (finished_signal.wait_for(lock, std::chrono::milliseconds(50), [&] { return finished; })) break;
+    }
+    if (!interrupted && PyErr_CheckSignals() != 0) {
+      interrupted = true;
+      cancel.store(true, std::memory_order_relaxed);
+    }
+  }
+  worker.join();
+  if (interrupted) throw py::error_already_set();
+  if (failure) std::rethrow_exception(failure);
+}
+
 PySurface surface_py(py::object structure, py::object centres, py::object radii, const std::string& surface,
                      double probe, double density,
                      std::optional<int> frequency, const std::string& method, bool cleanup, bool outer_only,
                      bool area_corrected, bool check, int threads, std::uint64_t max_faces, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
                      std::optional<std::filesystem::path> radius_file) {
-  check_probe_and_threads(probe, threads);
+  threads = checked_probe_and_threads(probe, threads);
   if (!std::isfinite(density) || density <= 0) throw Error("density: must be a finite number > 0 (vertices/A^2)");
   if (frequency && (*frequency < 1 || *frequency > 200)) throw Error("frequency: must be 1 to 200");
-
-  auto data = std::make_shared<SurfaceData>();
-  data->structure = atoms_argument(structure, centres, radii, [&] {
-    return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
-  });
 
   molsurf::ComputeSurfaceOptions options;
   options.surface = surface_kind(surface);
@@ -368,20 +440,24 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
   options.cleanup = cleanup;
   options.check_self_intersections = check;
   options.max_sphere_faces = max_faces;
+
+  // Arrays too large for the limits are refused from their radii alone, before any atom
+  // is built (ten million atoms took 4 GB and most of a minute to be refused after).
+  if (structure.is_none() && !centres.is_none() && !radii.is_none()) {
+    const auto r = as_array<double>(radii, "radii");
+    if (r.ndim() == 1 && std::all_of(r.data(), r.data() + r.size(), [](double x) { return x >= 0 && x < 1e16; }))
+      molsurf::check_sphere_faces("atoms", molsurf::estimate_resources(std::span(r.data(), r.size()), options.spheres),
+                                  options.spheres, max_faces);
+  }
+  auto data = std::make_shared<SurfaceData>();
+  data->structure = atoms_argument(structure, centres, radii, [&] {
+    return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
+  });
   options.source = data->structure->report.file;
   data->spheres = options.spheres;
   data->kind = options.surface;
-  // Ctrl-C: the library reports progress at least at the start and end of every stage;
-  // where that happens outside a parallel region (so an exception may leave it), a pending
-  // KeyboardInterrupt is raised there, ending the computation at the next stage boundary.
-  options.progress = [](molsurf::SurfaceStage, std::size_t, std::size_t) {
-    if (omp_get_level() > 0) return;  // inside a parallel region, even a one-thread one
-    py::gil_scoped_acquire acquire;
-    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-  };
-  {
-    // Other Python threads run meanwhile.
-    py::gil_scoped_release release;
+  run_interruptibly([&](const molsurf::CancelFlag& cancel) {
+    options.cancel = &cancel;
     data->computed = molsurf::compute_surface(data->structure->atoms, options);
     // The true spheres' numbers, as the command's report and CSV tables give them.
     if (options.surface == molsurf::SurfaceKind::ses) {
@@ -394,14 +470,14 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
       data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
     }
-  }
+  });
   return {std::move(data)};
 }
 
 PyAreas areas_single(py::object structure, py::object centres, py::object radii, double probe, bool outer_only,
                  int threads, std::optional<int> model, py::object chains, bool keep_water, bool hydrogens,
                  bool hetatm, const std::string& radius_set, std::optional<std::filesystem::path> radius_file) {
-  check_probe_and_threads(probe, threads);
+  threads = checked_probe_and_threads(probe, threads);
   auto data = std::make_shared<AreasData>();
   data->structure = atoms_argument(structure, centres, radii, [&] {
     return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
@@ -512,7 +588,7 @@ py::object areas_py(py::object structure, py::object centres, py::object coords,
       throw Error(std::string(name) + ": expected an array of shape (N, 3) or (frames, atoms, 3), got " +
                   shape_text(c));
     if (c.ndim() == 3) {
-      check_probe_and_threads(probe, threads);
+      threads = checked_probe_and_threads(probe, threads);
       return py::cast(trajectory_areas(c, radii, probe, outer_only, threads));
     }
     coords = c;

@@ -428,6 +428,21 @@ TEST(Cli, ThreadCountIsBounded) {
   EXPECT_NE(r.err.find("more than the"), std::string::npos) << r.err;  // a note, not a crash
 }
 
+// Issue 34: --threads 1024 is in range, but under a virtual-memory limit libgomp could not
+// start the team and ended the process with its own message. The count is capped at what
+// the process can start, with a note, and the run completes.
+TEST(Cli, MoreThreadsThanTheProcessCanStartAreCappedWithANote) {
+  TempDir dir;
+  write_small_structure(dir.path() / "s.xyzr");
+  const auto r = run_molsurf("--threads 1024 -o s.off s.xyzr", dir.path(), "ulimit -v 4000000; ");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("molsurf: note: --threads: 1024 threads asked for, but this process can start only"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("libgomp"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "s.off"));
+}
+
 TEST(Cli, RunningOutOfMemoryIsAClearError) {
   TempDir dir;
   // 50 spheres of 560 000 faces each, within every limit, but not within 400 MB.

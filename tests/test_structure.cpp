@@ -2,6 +2,8 @@
 // and the error messages for bad input.
 #include <gtest/gtest.h>
 #include <stdlib.h>
+#include <sys/stat.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,6 +17,7 @@
 #include "molsurf/atoms.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/report.hpp"
+#include "molsurf/resource_limits.hpp"
 
 namespace molsurf {
 namespace {
@@ -559,6 +562,47 @@ TEST_F(InputErrors, TruncatedGzipSaysSoInOneLine) {
   const auto garbage = put("garbage.pdb.gz", "\x1f\x8b\x08\x00garbage that is not deflate data");
   EXPECT_NE(read_error(garbage).find("garbage.pdb.gz: "), std::string::npos);
   EXPECT_EQ(read_error(garbage).find('\n'), std::string::npos) << read_error(garbage);
+}
+
+// Issue 34: a gzip bomb grew until an allocation failed. The text is bounded by the memory
+// limit (ReadOptions::max_memory / kBytesPerTextByte) as it is decompressed: 8 MB of valid
+// PDB records under a 16 MB limit (1 MB of text) are refused in one line, and read whole
+// under the default limit.
+TEST_F(InputErrors, GzipBombStopsAtTheMemoryLimit) {
+  const std::string line = "ATOM      1  CA  ALA A   1       1.000   2.000   3.000  1.00  0.00           C  \n";
+  const std::filesystem::path bomb = dir_ / "bomb.pdb.gz";
+  gzFile out = gzopen(bomb.c_str(), "wb9");
+  ASSERT_NE(out, nullptr);
+  const std::size_t copies = 8'000'000 / line.size();
+  for (std::size_t k = 0; k < copies; ++k) gzwrite(out, line.data(), static_cast<unsigned>(line.size()));
+  gzclose(out);
+  ASSERT_LT(std::filesystem::file_size(bomb), 1'000'000u);
+  ReadOptions limited;
+  limited.max_memory = kBytesPerTextByte * 1'000'000;  // 1 MB of text
+  const std::string message = read_error(bomb, limited);
+  EXPECT_EQ(message.rfind(bomb.string() + ": decompressed, the file holds more than", 0), 0u) << message;
+  EXPECT_NE(message.find("raise the limit with --max-memory"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  EXPECT_EQ(read_structure(bomb).report.records, copies);
+  // A plain file beyond the bound is refused before it is read.
+  const auto plain = put("big.xyzr", std::string(2'000'000, ' ') + "0 0 0 1.5\n");
+  EXPECT_NE(read_error(plain, limited).find("big.xyzr: the file holds 0.002 GB of text; a structure read may hold 0.001 GB under the memory limit"),
+            std::string::npos)
+      << read_error(plain, limited);
+  EXPECT_EQ(read_error(plain), "");
+}
+
+// /dev/zero has no end: devices and pipes are refused before they are opened (a pipe's
+// open would wait for a writer), whatever their name says.
+TEST_F(InputErrors, DevicesAndPipesAreRefused) {
+  const std::filesystem::path zero = dir_ / "zero.pdb";
+  std::filesystem::create_symlink("/dev/zero", zero);
+  EXPECT_EQ(read_error(zero), zero.string() + ": cannot read: it is a device, pipe or socket, not a regular file; "
+                                               "give a file");
+  const std::filesystem::path pipe = dir_ / "pipe.cif.gz";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  EXPECT_NE(read_error(pipe).find("pipe.cif.gz: cannot read: it is a device, pipe or socket"), std::string::npos);
+  EXPECT_NE(read_error("/dev/zero").find("/dev/zero: cannot read: it is a device"), std::string::npos);
 }
 
 TEST_F(InputErrors, MmcifWithoutCartesianCoordinatesSaysWhatIsMissing) {

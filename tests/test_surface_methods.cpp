@@ -80,7 +80,7 @@ TEST(SurfaceMethods, DuplicatesCostNothingAndKeepTheFirst) {
   atoms.push_back(atom_at({3, 2, 3}, 1.7));
   SurfaceOptions o;
   const SurfaceResult r = solvent_accessible_surface(atoms, o);
-  EXPECT_EQ(r.one_pass.duplicate_atoms, 199u);
+  EXPECT_EQ(r.one_pass.contained_atoms, 199u);
   EXPECT_TRUE(testing::valid_surface(r.mesh));
   for (std::int32_t tag : r.mesh.face_tags) EXPECT_TRUE(tag == 0 || tag == 200) << tag;
   EXPECT_TRUE(testing::methods_agree(std::span(atoms).subspan(195), o.spheres));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "molsurf/icosphere.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/volume_mesh.hpp"
+#include "volume/volume_mesh_size.hpp"
 
 namespace molsurf {
 namespace {
@@ -187,6 +189,36 @@ TEST_F(VolumeMeshTest, BadOptionsAreErrors) {
   options.box_margin = 0;
   EXPECT_THROW(mesh_volume(sphere, options), Error);
   EXPECT_THROW(mesh_volume(Mesh{}, {}), Error);
+}
+
+// Issue 34: --volume-size 0.05 or 1e-3 ran gmsh without end. The tetrahedra are bounded
+// from below before gmsh starts (the box's volume over a regular tetrahedron's) and
+// refused when their memory is above the limit.
+TEST_F(VolumeMeshTest, ATetrahedronSizeTooSmallForTheMemoryIsRefusedBeforeMeshing) {
+  const Mesh sphere = make_icosphere({0, 0, 0}, 10, {.frequency = 4});
+  for (const double size : {0.05, 1e-3, 1e-300}) {
+    VolumeMeshOptions options;
+    options.box_size = size;
+    try {
+      mesh_volume(sphere, options);
+      ADD_FAILURE() << "size " << size << " was meshed";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.rfind("volume mesh: the box (", 0), 0u) << message;
+      EXPECT_NE(message.find("with tetrahedra of size"), std::string::npos) << message;
+      EXPECT_NE(message.find("raise --volume-size, lower --box-margin, or raise the limit with --max-memory"),
+                std::string::npos)
+          << message;
+    }
+  }
+  // The bound is the box's volume over a regular tetrahedron's: 64 000 / (8 / (6 sqrt 2)).
+  EXPECT_NEAR(volume_detail::tetrahedra_lower_bound({{-20, -20, -20}, {20, 20, 20}}, 2), 64000 * 6 * std::sqrt(2.0) / 8,
+              1e-6);
+  // A limit below what the default size needs refuses it too; the default limit meshes it.
+  VolumeMeshOptions tight;
+  tight.max_memory = 1000;
+  EXPECT_THROW(mesh_volume(sphere, tight), Error);
+  EXPECT_GT(mesh_volume(sphere, {}).report.tetrahedra, 0u);
 }
 
 }  // namespace

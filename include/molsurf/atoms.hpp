@@ -50,6 +50,10 @@ struct ReadOptions {
   bool keep_hetatm = true;          // ligands, ions, cofactors
   std::string radius_set = "protor";  // "protor", "bondi" or "naccess"; ignored for PQR / xyzr
   std::filesystem::path radius_file;  // user table; overrides radius_set when not empty
+  // The memory limit in bytes (0: the memory this process may use). The file's text is
+  // refused beyond limit / kBytesPerTextByte (resource_limits.hpp), before it is read or
+  // as it is decompressed.
+  std::uint64_t max_memory = 0;
 };
 
 // What the reader kept, dropped and guessed: every count a user may want to check.

@@ -72,6 +72,9 @@ struct ComputeSurfaceOptions {
   // union reports (atoms trimmed, atoms) or (merges done, merges); every stage also
   // reports (0, 1) when it starts and (1, 1) when it ends. May be empty.
   std::function<void(SurfaceStage, std::size_t, std::size_t)> progress;
+  // Set from another thread to stop the call with Cancelled (cancel.hpp): read inside the
+  // union's loops and at every stage boundary. May be null.
+  const CancelFlag* cancel = nullptr;
 };
 
 struct ComputeSurfaceTimings {  // wall seconds, summed over both methods after a fallback

@@ -25,6 +25,9 @@ struct MeshCheck {
   std::size_t duplicate_faces = 0;       // same three vertices twice
   std::size_t intersecting_pairs = 0;    // face pairs that cross or overlap
   std::size_t contact_pairs = 0;         // face pairs that only touch, at a point or along a segment
+  // Face pairs classified exactly (the self-intersection test's work; pairs proved apart by
+  // the faces around a shared vertex are not counted).
+  std::size_t pairs_tested = 0;
   // Vertices with a NaN or infinite coordinate: nothing geometric can be decided about
   // them, so the geometric tests (degenerate faces, self-intersections, orientation) are
   // then skipped and the mesh is invalid.

@@ -30,6 +30,12 @@ inline constexpr std::uint64_t kMaxFacesPerSphere = 20 * 200 * 200;
 // "Memory"); rounded up.
 inline constexpr std::uint64_t kBytesPerSurfaceFace = 180;
 
+// Peak memory of a structure read per byte of its text: the text, gemmi's document and
+// the structure built from it, all held at once. Measured on the capsid's mmCIF (24 MB of
+// text, about 15 bytes per byte; a PDB file takes less), rounded up. Text beyond the
+// memory limit over this is refused before it is read (ReadOptions::max_memory).
+inline constexpr std::uint64_t kBytesPerTextByte = 16;
+
 // The memory this process may use: the machine's physical memory, or its control group's
 // limit (cgroup v2 memory.max) when that is lower.
 std::uint64_t available_memory_bytes();
@@ -47,9 +53,21 @@ struct ResourceEstimate {
 
 // Overflow-safe: a frequency too large for an int is estimated in floating point.
 ResourceEstimate estimate_resources(std::span<const Atom> atoms, const SphereOptions& options);
+// The same from the atoms' radii alone (without the probe): what a caller holding arrays
+// can ask before it builds any atom.
+ResourceEstimate estimate_resources(std::span<const double> radii, const SphereOptions& options);
+
+// No sphere (radius + probe) below this is triangulated: its icosphere's corners would
+// round onto each other (a radius of 1e-310 gave degenerate faces deep in the union).
+inline constexpr double kMinSphereRadius = 1e-6;
+
+// Throws molsurf::Error naming `input` when `estimate` has a sphere finer than
+// kMaxFacesPerSphere or more than `max_faces` faces in all (check_sphere_resources' limits).
+void check_sphere_faces(const std::filesystem::path& input, const ResourceEstimate& estimate,
+                        const SphereOptions& options, std::uint64_t max_faces);
 
 // Throws molsurf::Error naming `input` unless every sphere can be built: radius + probe
-// positive and finite (a zero-radius atom with --probe 0 is named with its serial and
+// finite and at least kMinSphereRadius (a zero-radius atom with --probe 0 is named with its serial and
 // residue), the sphere's faces within kMaxFacesPerSphere, and all spheres' faces within
 // `max_faces` (the message gives the estimate, the memory, and the flag that raises it).
 void check_sphere_resources(const std::filesystem::path& input, std::span<const Atom> atoms,

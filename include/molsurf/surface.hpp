@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 
+#include "molsurf/cancel.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/mesh.hpp"
@@ -86,6 +87,9 @@ struct SurfaceOptions {
   // job before the memory is spent. May be empty.
   std::function<void(const SurfaceSizeEstimate&)> check_size;
   std::uint64_t estimate_size_above = 0;
+  // Set from another thread to stop the union (cancel.hpp): read per atom in the one-pass
+  // trim and per merge in the pairwise union. May be null.
+  const CancelFlag* cancel = nullptr;
 };
 
 struct SurfaceTimings {  // seconds
@@ -111,7 +115,9 @@ struct SurfaceLevel {
 
 // The one-pass method's counts: where the faces of all polyhedra went.
 struct OnePassStats {
-  std::size_t atoms = 0, duplicate_atoms = 0, neighbour_pairs = 0;
+  // contained_atoms: atoms inside another atom's ball (copies, concentric smaller ones),
+  // left out of the union.
+  std::size_t atoms = 0, contained_atoms = 0, neighbour_pairs = 0;
   std::size_t faces_in = 0;       // all polyhedra's faces
   std::size_t faces_inside = 0;   // dropped whole (inside a neighbour)
   std::size_t faces_whole = 0;    // kept whole (reached by no neighbour)

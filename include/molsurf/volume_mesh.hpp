@@ -4,6 +4,7 @@
 // for finite-element solvers (FEniCS/dolfinx, FETk). Built with gmsh's library when molsurf
 // was built with it (MOLSURF_GMSH; GPL: see LICENSE); otherwise the call throws.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +17,10 @@ struct VolumeMeshOptions {
   double box_margin = 10;    // angstrom between the surface's bounding box and the outer box
   bool fill_inside = false;  // also the solute region inside the outer surface, each cavity its own region
   double box_size = 0;       // tetrahedron size at the box, angstrom; 0: box_margin / 3 (at least 1)
+  // Refuse, before gmsh starts, a mesh whose tetrahedra (at least the box's volume over a
+  // regular tetrahedron's of edge box_size) need more memory than this many bytes; 0: the
+  // memory this process may use.
+  std::uint64_t max_memory = 0;
 };
 
 struct VolumeRegion {

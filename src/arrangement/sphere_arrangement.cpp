@@ -24,6 +24,7 @@
 #include <tuple>
 
 #include "arrangement/arc_integrals.hpp"
+#include "arrangement/contained_spheres.hpp"
 #include "arrangement/sphere_predicates.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "common/thread_count_scope.hpp"
@@ -188,13 +189,7 @@ class SphereArranger {
         return;
       // Nested (closed balls): ball i inside ball j buries sphere i; ball j inside ball i
       // cuts nothing (a touching point at most).
-      auto nested = [&](double big, double small) {
-        if (big < small || d2 > (big - small) * (big - small) * (1 + 1e-12)) return false;
-        return exact_sign([&]<class T>() -> T {
-                 const auto d = arrangement::difference<T>(cj, ci);
-                 return (T(big) - T(small)) * (T(big) - T(small)) - dot(d, d);
-               }, out.decisions) >= 0;
-      };
+      auto nested = [&](double big, double small) { return arrangement::ball_in_ball(ci, small, cj, big, out.decisions); };
       if (nested(rj, ri)) {
         buried = true;
         return;
@@ -823,19 +818,18 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
   result.area_per_sphere.assign(n, 0);
   result.stats.spheres = n;
   if (n == 0) return result;
-  // Copies of a sphere (same centre and radius) count once, at the lowest index; the others
-  // are buried and cut nothing, so that a circle's spheres are alike on every sphere.
-  std::vector<std::uint32_t> by_value(n);
-  std::iota(by_value.begin(), by_value.end(), 0u);
-  auto value = [&](std::uint32_t i) { return std::tuple(centres[i].x, centres[i].y, centres[i].z, radii[i], i); };
-  std::sort(by_value.begin(), by_value.end(), [&](std::uint32_t a, std::uint32_t b) { return value(a) < value(b); });
-  std::vector<char> copy(n, 0);
-  for (std::size_t k = 1; k < n; ++k) {
-    const std::uint32_t a = by_value[k - 1], b = by_value[k];
-    copy[b] = centres[a] == centres[b] && radii[a] == radii[b];
+  // A sphere inside another's closed ball is buried and cuts nothing; of copies (same
+  // centre and radius) the lowest index counts, so that a circle's spheres are alike on
+  // every sphere. Settled before the neighbours: a thousand atoms at one centre would
+  // otherwise each be every other's neighbour.
+  const std::vector<std::uint32_t> container = arrangement::sphere_containers(centres, radii);
+  std::vector<char> copy(n, 0), held(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    held[i] = container[i] != i;
+    copy[i] = held[i] && centres[container[i]] == centres[i] && radii[container[i]] == radii[i];
   }
   std::vector<char> include(n);
-  for (std::size_t i = 0; i < n; ++i) include[i] = radii[i] > 0 && !copy[i];
+  for (std::size_t i = 0; i < n; ++i) include[i] = radii[i] > 0 && !held[i];
   const arrangement::PowerNeighbours neighbours = arrangement::power_neighbours(centres, radii, include);
   const SphereArranger arranger(centres, radii, neighbours);
   std::vector<SphereResult> spheres(n);
@@ -843,8 +837,9 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
     errors.run(i, [&] {
-      if (copy[i]) {
-        spheres[i].buried = spheres[i].duplicate = true;
+      if (held[i]) {
+        spheres[i].buried = true;
+        spheres[i].duplicate = copy[i];
         return;
       }
       spheres[i] = arranger.arrange(static_cast<std::uint32_t>(i));

@@ -71,6 +71,20 @@ int exact_sign(F&& f, DecisionCounter& counter) {
   return sign_of(f.template operator()<mpq_class>());
 }
 
+// Whether the closed ball of radius `small` about `a` lies in the closed ball of radius
+// `big` about `b`: big >= small and |b - a|^2 <= (big - small)^2, decided exactly on the
+// input doubles (floating point settles it when the distance is clearly apart from the
+// bound, whose rounding is some 1e-16 of it).
+inline bool ball_in_ball(const Vec3& a, double small, const Vec3& b, double big, DecisionCounter& counter) {
+  if (big < small) return false;
+  const Vec3 gap = b - a;
+  if (molsurf::dot(gap, gap) > (big - small) * (big - small) * (1 + 1e-12)) return false;
+  return exact_sign([&]<class T>() -> T {
+           const auto d = difference<T>(b, a);
+           return (T(big) - T(small)) * (T(big) - T(small)) - dot(d, d);
+         }, counter) >= 0;
+}
+
 // sign(x + y sqrt(z)), z >= 0, exactly.
 int sign_plus_root(const mpq_class& x, const mpq_class& y, const mpq_class& z);
 

@@ -56,6 +56,8 @@ struct SurfaceCommand {
   const CLI::Option* volume_option = nullptr;
 
   void add_options(CLI::App& app);
+  // --threads lowered, with a note, to what this process can start (startable_threads).
+  void cap_threads();
   int run() const;
   int run_areas_only() const;
   int run_model_meshes() const;

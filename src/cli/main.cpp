@@ -75,6 +75,7 @@ int main(int argc, char** argv) {
       std::cerr << "molsurf: no structure file given\nRun with --help for more information.\n";
       return 2;
     }
+    if (!subcommand) surface.cap_threads();
     const int status = check_app->parsed()     ? check.run()
                        : boolean_app->parsed() ? boolean.run()
                        : batch_app->parsed()   ? batch.run()

@@ -24,6 +24,7 @@
 #include "molsurf/sasa_structure.hpp"
 #include "molsurf/standard_output.hpp"
 #include "molsurf/split_components.hpp"
+#include "molsurf/threads.hpp"
 #include "molsurf/volume_mesh.hpp"
 #include "molsurf/written_check.hpp"
 #include "cli/validators.hpp"
@@ -129,7 +130,8 @@ void SurfaceCommand::add_options(CLI::App& app) {
       ->group(sphere);
   app.add_option("--max-memory", max_memory_gb,
                  "Refuse to start the union when the surface would need more memory than this many GB\n"
-                 "(estimated from a sample of atoms, about 180 bytes per face); default: this machine's memory")
+                 "(estimated from a sample of atoms, about 180 bytes per face), and a structure whose text\n"
+                 "(decompressed) would need more to read (16 bytes per byte); default: this machine's memory")
       ->check(finite_number(0, 1e9, true))
       ->group(sphere);
   auto* volume_group = "Volume mesh around the molecule (paper section 3.4)";
@@ -356,11 +358,13 @@ ReadOptions read_options(const SurfaceCommand& command) {
   std::stringstream list(command.chains);
   for (std::string chain; std::getline(list, chain, ',');)
     if (!chain.empty()) options.chains.push_back(chain);
+  if (command.max_memory_gb > 0) options.max_memory = static_cast<std::uint64_t>(command.max_memory_gb * 1e9);
   return options;
 }
 
 // --threads goes to each library call that runs in parallel (the surface, the check, the
-// writing), which sets it for its own duration; here it is only compared with the cores.
+// writing), which sets it for its own duration; here it is only compared with the cores
+// (SurfaceCommand::cap_threads has already capped it at what this process can start).
 void note_threads(const SurfaceCommand& command) {
   const unsigned cores = std::thread::hardware_concurrency();
   if (cores > 0 && command.threads > static_cast<int>(cores) && !command.quiet)
@@ -468,6 +472,7 @@ std::optional<VolumeMeshReport> add_volume_mesh(const SurfaceCommand& command, c
   options.box_margin = command.box_margin;
   options.box_size = command.volume_size;
   options.fill_inside = command.fill_inside;
+  if (command.max_memory_gb > 0) options.max_memory = static_cast<std::uint64_t>(command.max_memory_gb * 1e9);
   VolumeMesh made = mesh_volume(surface, options);
   if (!command.quiet) text << "\r";
   files.add_text(command.volume_mesh, std::move(made.msh));
@@ -591,6 +596,12 @@ void print_summary(const SurfaceReport& report, const std::optional<VolumeMeshRe
 }
 
 }  // namespace
+
+void SurfaceCommand::cap_threads() {
+  const ThreadCount count = startable_threads(threads);
+  if (!count.note.empty()) std::cerr << "molsurf: note: --threads: " << count.note << "\n";
+  threads = count.threads;
+}
 
 int SurfaceCommand::run() const {
   if (surface == "ses") {

@@ -188,6 +188,28 @@ void BoxBvh::build(const BoxOf& box_of, std::vector<std::uint32_t> ids) {
   std::sort(leaves_.begin(), leaves_.end(), [&](std::uint32_t a, std::uint32_t b) { return first_[a] < first_[b]; });
 }
 
+void BoxBvh::set_keys(const std::function<Keys(std::uint32_t item)>& keys_of) {
+  // Bottom up: a node's children have higher indices than it (Builder's layout).
+  node_keys_.assign(node_count_, Keys{kNoKey, kNoKey, kNoKey});
+  auto common = [](const Keys& a, const Keys& b) {
+    Keys both{kNoKey, kNoKey, kNoKey};
+    int n = 0;
+    for (const std::uint32_t k : a)
+      if (k != kNoKey && (k == b[0] || k == b[1] || k == b[2])) both[n++] = k;
+    return both;  // sorted, as `a` is
+  };
+  for (std::uint32_t node = node_count_; node-- > 0;) {
+    if (count_[node] == 0) {
+      node_keys_[node] = common(node_keys_[first_[node]], node_keys_[first_[node] + 1]);
+      continue;
+    }
+    Keys keys = keys_of(items_[first_[node]]);
+    for (std::uint32_t k = first_[node] + 1; k < first_[node] + count_[node] && keys[0] != kNoKey; ++k)
+      keys = common(keys, keys_of(items_[k]));
+    node_keys_[node] = keys;
+  }
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>> BoxBvh::overlapping_pairs() const {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   const auto n = static_cast<std::int64_t>(items_.size());

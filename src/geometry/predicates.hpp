@@ -79,6 +79,11 @@ inline int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) 
   const double bound = kOrient3dBound * permanent +
                        kUnderflowGuard * (1.0 + abs_adz + abs_bdz + abs_cdz);
   if (std::fabs(det) > bound) return (det < 0) - (det > 0);  // as orient2d's
+  // Four points on one axis-aligned plane (a polygon cap of a mesh file, a box's side):
+  // a column of the determinant is exactly zero (a difference of doubles is 0 only when
+  // they are equal), so the sign is 0 without the exact arithmetic the filter sends it to.
+  if ((adz == 0 && bdz == 0 && cdz == 0) || (adx == 0 && bdx == 0 && cdx == 0) || (ady == 0 && bdy == 0 && cdy == 0))
+    return 0;
   return orient3d_exact(a, b, c, d);
 }
 

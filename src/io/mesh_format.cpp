@@ -10,6 +10,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "mesh/polygon_triangulation.hpp"
 #include "io/coordinate_range.hpp"
 #include "io/mesh_formats.hpp"
 #include "molsurf/error.hpp"
@@ -70,6 +71,13 @@ void check_writable(const path& file, const Mesh& mesh, const MeshWriteOptions& 
 }
 
 std::string read_file_bytes(const path& file) {
+  // A device or pipe has no size to bound (/dev/zero never ends), and opening a pipe
+  // would wait for a writer: refused before the open.
+  std::error_code status_error;
+  const auto type = std::filesystem::status(file, status_error).type();
+  if (!status_error && type != std::filesystem::file_type::regular && type != std::filesystem::file_type::directory &&
+      type != std::filesystem::file_type::not_found)
+    fail(file, "cannot read: it is a device, pipe or socket, not a regular file; give a file");
   errno = 0;
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file, std::string("cannot read: ") + (errno ? std::strerror(errno) : "cannot open"));
@@ -162,9 +170,17 @@ void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t ver
       fail(file, line, "vertex index " + std::to_string(v + first_index) + " out of range (" +
                            std::to_string(first_index) + ".." +
                            std::to_string(static_cast<long long>(vertex_count) - 1 + first_index) + ")");
-  for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
-    mesh.faces.push_back({static_cast<Index>(polygon[0]), static_cast<Index>(polygon[i]),
-                          static_cast<Index>(polygon[i + 1])});
+  if (polygon.size() == 3) {
+    mesh.faces.push_back({static_cast<Index>(polygon[0]), static_cast<Index>(polygon[1]), static_cast<Index>(polygon[2])});
+    return;
+  }
+  // Every reader has its vertices when it meets a face that uses them (the indices were
+  // just checked against the vertices read), so the polygon is triangulated as drawn.
+  std::vector<Index> corners(polygon.begin(), polygon.end());
+  if (vertex_count > mesh.vertices.size())
+    for (std::size_t i = 1; i + 1 < corners.size(); ++i) mesh.faces.push_back({corners[0], corners[i], corners[i + 1]});
+  else
+    for (const Triangle& t : triangulate_polygon(mesh.vertices, corners)) mesh.faces.push_back(t);
 }
 
 void check_vertex_coordinates(const Mesh& mesh, const path& file) {

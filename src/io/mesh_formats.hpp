@@ -94,8 +94,8 @@ class LineReader {
   std::size_t line_number_ = 0;
 };
 
-// Converts a polygon's vertex list to triangles (v0, vi, vi+1), checking each index
-// against `vertex_count`; `line` may be 0 for binary formats. Indices are 0-based;
+// Converts a polygon's vertex list to triangles (triangulate_polygon: concave polygons as
+// drawn), checking each index against `vertex_count`; `line` may be 0 for binary formats. Indices are 0-based;
 // `first_index` (1 for OBJ, MSMS, gmsh) only makes the error message quote the file's numbering.
 void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t vertex_count,
                  const path& file, std::size_t line, int first_index = 0);

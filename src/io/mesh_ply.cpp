@@ -2,7 +2,7 @@
 // "list uchar int vertex_indices" plus an "int tag" face property when the mesh has tags.
 // Binary little-endian by default, ASCII on request (shortest round-trip text: exact).
 // The reader takes any PLY a mesh tool writes: ASCII or binary of either byte order,
-// any scalar types, extra properties and elements (skipped), polygons (fan-triangulated).
+// any scalar types, extra properties and elements (skipped), polygons (triangulated as drawn, concave ones too).
 #include <algorithm>
 #include <bit>
 #include <array>
@@ -339,7 +339,7 @@ Mesh read_ply(const path& file) {
       if (is_vertex) mesh.vertices.push_back(point);
       if (is_face) {
         add_polygon(mesh, polygon, mesh.vertices.size(), file, body.line());
-        if (tag != kAbsent) mesh.face_tags.resize(mesh.faces.size(), face_tag);  // every fan triangle
+        if (tag != kAbsent) mesh.face_tags.resize(mesh.faces.size(), face_tag);  // every triangle of the polygon
       }
     }
   }

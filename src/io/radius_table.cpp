@@ -61,7 +61,7 @@ RadiusTable RadiusTable::builtin(const std::string& name) {
 }
 
 RadiusTable RadiusTable::from_file(const std::filesystem::path& path) {
-  return parse(detail::read_text_file(path), path.string());
+  return parse(detail::read_text_file(path, detail::max_text_bytes(0)), path.string());
 }
 
 RadiusTable RadiusTable::parse(const std::string& text, const std::string& source_name) {

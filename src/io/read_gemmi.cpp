@@ -15,8 +15,6 @@
 #include <string>
 #include <string_view>
 
-#include <zlib.h>
-
 #include <gemmi/cif.hpp>
 #include <gemmi/mmread.hpp>
 
@@ -95,53 +93,6 @@ bool has_gz_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return extension == ".gz";
-}
-
-// The whole decompressed content of a gzip file (members concatenated, as gzip -d does).
-// Our own loop rather than gemmi's: gemmi sizes its buffer from the gzip trailer, which
-// a truncated file does not have, and then guesses aloud about sizes.
-std::string gunzip_file(const std::filesystem::path& path) {
-  const std::string compressed = read_binary_file(path);
-  std::string text;
-  z_stream stream{};
-  if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) fail(path, "cannot start gzip decompression");
-  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
-  stream.avail_in = static_cast<uInt>(std::min<std::size_t>(compressed.size(), UINT32_MAX));
-  std::size_t fed = stream.avail_in;
-  char chunk[1 << 16];
-  int status = Z_OK;
-  while (true) {
-    stream.next_out = reinterpret_cast<Bytef*>(chunk);
-    stream.avail_out = sizeof chunk;
-    status = inflate(&stream, Z_NO_FLUSH);
-    text.append(chunk, sizeof chunk - stream.avail_out);
-    if (stream.avail_in == 0 && fed < compressed.size()) {
-      const std::size_t more = std::min<std::size_t>(compressed.size() - fed, UINT32_MAX);
-      stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data() + fed));
-      stream.avail_in = static_cast<uInt>(more);
-      fed += more;
-    }
-    if (status == Z_STREAM_END) {
-      // Another gzip member may follow; trailing zero padding is allowed as gzip allows it.
-      const std::size_t used = fed - stream.avail_in;
-      const bool more_members = used < compressed.size() && compressed[used] == '\x1f';
-      if (!more_members) break;
-      inflateReset(&stream);
-      continue;
-    }
-    if (status != Z_OK) break;  // with fresh output space, Z_BUF_ERROR means the input ran out
-
-  }
-  inflateEnd(&stream);
-  if (status == Z_STREAM_END) {
-    text::normalize_text(text);
-    return text;
-  }
-  if (status == Z_BUF_ERROR)
-    fail(path, "truncated gzip file: the compressed data ends early (after " + std::to_string(text.size()) +
-                   " bytes of text); download it again");
-  fail(path, "corrupt gzip data (" + std::string(stream.msg ? stream.msg : "zlib error " + std::to_string(status)) +
-                 ")");
 }
 
 // mmCIF without coordinates (a dictionary, a restraint file, a model without _atom_site
@@ -244,10 +195,10 @@ struct GemmiRead {
   WideResidueNumbers wide;
 };
 
-GemmiRead read_gemmi_structure(const std::filesystem::path& path, StructureFormat format) {
+GemmiRead read_gemmi_structure(const std::filesystem::path& path, StructureFormat format, std::uint64_t max_text) {
   GemmiRead read;
   try {
-    const std::string buffer = has_gz_extension(path) ? gunzip_file(path) : read_text_file(path);
+    const std::string buffer = has_gz_extension(path) ? read_gzip_file(path, max_text) : read_text_file(path, max_text);
     if (buffer.empty()) fail(path, "file is empty");
     if (format == StructureFormat::pdb) {
       check_pdb_atom_records(path, buffer);
@@ -270,13 +221,14 @@ GemmiRead read_gemmi_structure(const std::filesystem::path& path, StructureForma
 }  // namespace
 
 ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
-                             std::optional<int> model) {
-  const GemmiRead read = read_gemmi_structure(path, format);
+                             std::optional<int> model, std::uint64_t max_text) {
+  const GemmiRead read = read_gemmi_structure(path, format, max_text);
   return records_from_gemmi(read.structure, path, model, read.wide);
 }
 
-std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format) {
-  const GemmiRead read = read_gemmi_structure(path, format);
+std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format,
+                                              std::uint64_t max_text) {
+  const GemmiRead read = read_gemmi_structure(path, format, max_text);
   std::vector<ModelRecords> models{records_from_gemmi(read.structure, path, std::nullopt, read.wide)};
   const std::vector<int> numbers = models.front().model_numbers;
   for (std::size_t k = 1; k < numbers.size(); ++k)

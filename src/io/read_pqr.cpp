@@ -40,8 +40,8 @@ std::optional<ResidueNumber> parse_residue_number(std::string_view field) {
 
 }  // namespace
 
-ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model) {
-  const std::string text = read_text_file(path);
+ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model, std::uint64_t max_text) {
+  const std::string text = read_text_file(path, max_text);
   ModelRecords result;
   std::optional<int> current_model;  // set by MODEL records; files without them have model 1
   std::optional<int> chosen_model = model;

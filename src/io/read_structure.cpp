@@ -30,23 +30,6 @@ std::optional<double> parse_double(std::string_view field) {
   return value;
 }
 
-std::string read_text_file(const std::filesystem::path& path) {
-  std::string text = read_binary_file(path);
-  text::normalize_text(text);
-  return text;
-}
-
-std::string read_binary_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::filesystem::exists(path, ec) ? "cannot open file" : "file not found");
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) fail(path, "read error");
-  return std::move(content).str();
-}
-
 std::string infer_element(std::string_view atom_name, std::string_view residue_name) {
   std::string name;
   for (char c : atom_name) name += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -187,7 +170,7 @@ Structure read_sphere_list(const std::filesystem::path& path, const ReadOptions&
     fail(path, ".xyzr files have no chain identifiers; a chain selection cannot be applied");
   if (options.model && *options.model != 1) detail::fail_unknown_model(path, *options.model, {1});
   Structure structure;
-  structure.atoms = detail::read_xyzr(path);
+  structure.atoms = detail::read_xyzr(path, detail::max_text_bytes(options.max_memory));
   ReadReport& report = structure.report;
   report.file = path;
   report.format = StructureFormat::xyzr;
@@ -206,20 +189,19 @@ Structure read_sphere_list(const std::filesystem::path& path, const ReadOptions&
 }  // namespace
 
 Structure read_structure(const std::filesystem::path& path, const ReadOptions& options) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) fail(path, "file not found");
-  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
+  detail::require_regular_file(path);
   // Checked here because gemmi reports an empty file as a failed read.
-  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == 0)
-    fail(path, "file is empty");
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) == 0 && !ec) fail(path, "file is empty");
   const StructureFormat format = structure_format_from_path(path);
   if (format == StructureFormat::xyzr) return read_sphere_list(path, options);
 
   // The table is read first so a bad radius file fails before a long structure read.
   const std::optional<RadiusTable> table = detail::radius_table_for(format, options);
+  const std::uint64_t max_text = detail::max_text_bytes(options.max_memory);
   detail::ModelRecords model = format == StructureFormat::pqr
-                                   ? detail::read_pqr(path, options.model)
-                                   : detail::read_with_gemmi(path, format, options.model);
+                                   ? detail::read_pqr(path, options.model, max_text)
+                                   : detail::read_with_gemmi(path, format, options.model, max_text);
   return detail::select_atoms(std::move(model), path, format, options, table);
 }
 
@@ -244,7 +226,7 @@ std::vector<Structure> read_all_models(const std::filesystem::path& path, const 
   }());
   const std::optional<RadiusTable> table = detail::radius_table_for(format, options);
   std::vector<Structure> models;
-  for (detail::ModelRecords& records : detail::read_all_with_gemmi(path, format))
+  for (detail::ModelRecords& records : detail::read_all_with_gemmi(path, format, detail::max_text_bytes(options.max_memory)))
     models.push_back(detail::select_atoms(std::move(records), path, format, options, table));
   return models;
 }

@@ -9,8 +9,8 @@
 
 namespace molsurf::detail {
 
-std::vector<Atom> read_xyzr(const std::filesystem::path& path) {
-  const std::string text = read_text_file(path);
+std::vector<Atom> read_xyzr(const std::filesystem::path& path, std::uint64_t max_text) {
+  const std::string text = read_text_file(path, max_text);
   std::vector<Atom> atoms;
   std::size_t line_number = 0;
   DataLines lines(text);

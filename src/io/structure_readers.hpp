@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/bounded_read.hpp"
 #include "io/coordinate_range.hpp"
 #include "io/text_fields.hpp"
 #include "molsurf/atoms.hpp"
@@ -33,20 +34,22 @@ struct ModelRecords {
   int model_used = 1;
 };
 
+// Each reader holds at most `max_text` bytes of text (bounded_read.hpp).
 // PDB or mmCIF, plain or gzipped. The only translation unit that includes gemmi.
 ModelRecords read_with_gemmi(const std::filesystem::path& path, StructureFormat format,
-                             std::optional<int> model);
+                             std::optional<int> model, std::uint64_t max_text);
 // Every model's records, the file parsed once (the first model first, then in file order).
-std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format);
+std::vector<ModelRecords> read_all_with_gemmi(const std::filesystem::path& path, StructureFormat format,
+                                              std::uint64_t max_text);
 // gemmi keeps residue numbers in an int; a file's numbers beyond 32 bits are handed to it as
 // stand-ins (unused numbers) and restored from this map (stand-in -> the file's number).
 using WideResidueNumbers = std::map<int, std::int64_t>;
 // The records of one model of a structure gemmi holds in memory; `source` names it in messages.
 ModelRecords records_from_gemmi(const gemmi::Structure& structure, const std::filesystem::path& source,
                                 std::optional<int> model, const WideResidueNumbers& wide = {});
-ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model);
+ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> model, std::uint64_t max_text);
 // Spheres as given: x y z r [name]; radii are already set.
-std::vector<Atom> read_xyzr(const std::filesystem::path& path);
+std::vector<Atom> read_xyzr(const std::filesystem::path& path, std::uint64_t max_text);
 
 // The radius table `options` ask for, for a format without radii of its own (none for PQR, xyzr).
 std::optional<RadiusTable> radius_table_for(StructureFormat format, const ReadOptions& options);
@@ -95,11 +98,6 @@ std::optional<Int> parse_int(std::string_view field) {
   return value;
 }
 
-// The file's whole content; fails with a clear message when it cannot be read.
-std::string read_binary_file(const std::filesystem::path& path);
-// The same for a text file, normalised (text_fields.hpp: no byte-order mark, no CR-only
-// line ends).
-std::string read_text_file(const std::filesystem::path& path);
 
 // Element (upper case) from an atom name when the file gives none, following gemmi's rule
 // for PDB names with the alignment lost (PQR, xyzr): see read_structure.cpp.

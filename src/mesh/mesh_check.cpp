@@ -13,8 +13,8 @@
 //  - Self-intersections: all face pairs whose closed boxes overlap, classified exactly by
 //    geometry::classify_triangle_pair (contacts are counted apart and are not defects).
 //    In a closed, manifold, consistently oriented mesh, a pair that shares a corner whose
-//    star is proved embedded (mesh/embedded_stars.hpp) meets only where it shares it, and
-//    is not tested.
+//    star is proved embedded, or a proved chain of faces around it (mesh/embedded_stars.hpp,
+//    FanKeys), meets only where it shares it, and is not tested (nor, in bulk, visited).
 //  - Inward components: a component (faces connected through shared vertices) inside an
 //    odd number of other components (exact ray parity, geometry/ray_parity.hpp) is a
 //    cavity and must have negative volume; any other must have positive volume. When the
@@ -333,23 +333,25 @@ std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8
   return duplicates;
 }
 
-// `bvh` holds the faces that are not degenerate. Pairs that share a corner whose star is
-// proved embedded (`embedded`, per vertex; may be empty) meet only where they share it.
-void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std::span<const std::uint8_t> embedded,
+// `bvh` holds the faces that are not degenerate. Pairs that share a fan key (a corner
+// whose star is proved embedded, or a proved chain of faces around it: `fans`, may be
+// empty) meet only where they share it; the tree skips whole subtrees of them.
+void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, const FanKeys& fans,
                               std::size_t max_examples, MeshCheck& result) {
 
-  std::size_t intersecting = 0, contacts = 0;
+  std::size_t intersecting = 0, contacts = 0, tested = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
   const auto count = static_cast<std::int64_t>(bvh.leaf_count());
   ParallelExceptions errors;
-#pragma omp parallel reduction(+ : intersecting, contacts) if (count >= kParallelMinItems / 64)
+#pragma omp parallel reduction(+ : intersecting, contacts, tested) if (count >= kParallelMinItems / 64)
   {
     LowestIndices local_intersecting(max_examples), local_contact(max_examples);
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t k = 0; k < count; ++k)
       errors.run(k, [&] {
         bvh.for_each_pair_at_leaf(static_cast<std::size_t>(k), [&](std::uint32_t face_i, std::uint32_t j) {
-          if (!embedded.empty() && share_embedded_star(mesh, embedded, face_i, j)) return;
+          if (!fans.empty() && fans.share(mesh, face_i, j)) return;
+          ++tested;
           switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
             case geometry::TrianglePairRelation::intersecting:
               ++intersecting;
@@ -376,6 +378,7 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, std
   errors.rethrow();
   result.intersecting_pairs = intersecting;
   result.contact_pairs = contacts;
+  result.pairs_tested = tested;
   result.examples_intersecting = intersecting_examples.sorted();
   result.examples_contact = contact_examples.sorted();
   result.self_intersections_checked = true;
@@ -594,9 +597,14 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
     if (options.self_intersections) {
       // Each star one closed, consistently oriented fan: the embedded ones can be proved.
       std::vector<std::uint8_t> embedded;
-      if (all_topological && result.closed() && result.manifold() && result.oriented())
+      FanKeys fans;
+      face_tree();
+      if (all_topological && result.closed() && result.manifold() && result.oriented()) {
         embedded = embedded_stars(mesh, around);
-      check_self_intersections(mesh, face_tree(), embedded, options.max_examples, result);
+        fans = FanKeys(mesh, around, embedded);
+        tree->set_keys([&](std::uint32_t f) { return fans.of(mesh, f); });
+      }
+      check_self_intersections(mesh, *tree, fans, options.max_examples, result);
     }
     check_components(mesh, face_tree, result);
   }

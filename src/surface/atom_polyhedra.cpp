@@ -7,6 +7,7 @@
 #include <numeric>
 #include <tuple>
 
+#include "arrangement/contained_spheres.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "geometry/point_grid.hpp"
 #include "molsurf/icosphere.hpp"
@@ -103,15 +104,27 @@ AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& o
   circumradius_.resize(n);
   inradius_.resize(n);
   template_of_.resize(n);
-  duplicate_.assign(n, 0);
-  std::map<int, std::uint16_t> template_index;
+  contained_.assign(n, 0);
   std::vector<int> frequency(n);
   std::vector<double> radius(n);
   for (std::size_t i = 0; i < n; ++i) {
+    centre_[i] = atoms[i].centre;
     frequency[i] = sphere_frequency(atoms[i], options);
     radius[i] = sphere_radius(atoms[i], options);
-    auto [it, inserted] = template_index.try_emplace(frequency[i], static_cast<std::uint16_t>(templates_.size()));
-    if (inserted) templates_.push_back(make_template(frequency[i]));
+  }
+  // Atoms whose sphere another atom's ball holds (copies, the smaller of concentric
+  // atoms) add nothing to the union of the true balls: decided exactly on the sphere
+  // radii, as the arrangement decides it, so the mesh and the exact areas drop the same.
+  // First, so that no template is built for them alone (10 000 concentric atoms of
+  // different radii would need hundreds).
+  const std::vector<std::uint32_t> container = arrangement::sphere_containers(centre_, radius);
+  std::map<int, std::uint16_t> template_index;
+  for (std::size_t i = 0; i < n; ++i) {
+    contained_[i] = container[i] != i;
+    // A contained atom takes its holder's shape: it is never built, only sized.
+    const int f = frequency[container[i]];
+    auto [it, inserted] = template_index.try_emplace(f, static_cast<std::uint16_t>(templates_.size()));
+    if (inserted) templates_.push_back(make_template(f));
     template_of_[i] = it->second;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -127,18 +140,6 @@ AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& o
                                      1e-9 * std::max({std::fabs(centre_[i].x), std::fabs(centre_[i].y),
                                                       std::fabs(centre_[i].z)}));
   }
-  // Identical atoms: sort by (centre, radius, frequency), equal runs keep their first.
-  std::vector<std::uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  auto key = [&](std::uint32_t i) {
-    return std::tuple(centre_[i].x, centre_[i].y, centre_[i].z, radius[i], frequency[i], options.area_corrected);
-  };
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const auto ka = key(a), kb = key(b);
-    return ka != kb ? ka < kb : a < b;
-  });
-  for (std::size_t k = 1; k < n; ++k)
-    if (key(order[k]) == key(order[k - 1])) duplicate_[order[k]] = 1;
 }
 
 std::uint32_t PolyhedronTemplate::face_towards(const Vec3& direction) const {
@@ -169,13 +170,14 @@ void AtomPolyhedra::vertices(std::size_t atom, std::vector<Vec3>& out) const {
   for (std::size_t v = 0; v < unit.size(); ++v) out[v] = centre_[atom] + unit[v] * scale_[atom];
 }
 
-std::size_t AtomPolyhedra::duplicates() const {
-  return static_cast<std::size_t>(std::count(duplicate_.begin(), duplicate_.end(), 1));
+std::size_t AtomPolyhedra::contained_count() const {
+  return static_cast<std::size_t>(std::count(contained_.begin(), contained_.end(), 1));
 }
 
 std::size_t AtomPolyhedra::face_count() const {
   std::size_t faces = 0;
-  for (std::size_t i = 0; i < size(); ++i) faces += shape(i).unit.faces.size();
+  for (std::size_t i = 0; i < size(); ++i)
+    if (!contained(i)) faces += shape(i).unit.faces.size();
   return faces;
 }
 
@@ -187,10 +189,10 @@ NeighbourList find_neighbours(const AtomPolyhedra& polyhedra) {
   double largest = 0;
   std::vector<Vec3> centres(n);
   for (std::size_t i = 0; i < n; ++i) {
-    largest = std::max(largest, polyhedra.circumradius(i));
+    if (!polyhedra.contained(i)) largest = std::max(largest, polyhedra.circumradius(i));
     centres[i] = polyhedra.centre(i);
   }
-  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return !polyhedra.duplicate(i); });
+  const geometry::PointGrid grid(centres, 2 * largest, [&](std::size_t i) { return !polyhedra.contained(i); });
   std::vector<std::vector<std::uint32_t>> rows(n);
   // Rows are independent (the grid is only read): in parallel, each sorted, so the list
   // does not depend on the thread count.
@@ -200,7 +202,7 @@ NeighbourList find_neighbours(const AtomPolyhedra& polyhedra) {
   for (std::int64_t row = 0; row < count; ++row)
     errors.run(row, [&] {
       const auto i = static_cast<std::size_t>(row);
-      if (polyhedra.duplicate(i)) return;
+      if (polyhedra.contained(i)) return;
       grid.for_each_near(centres[i], [&](std::uint32_t j) {
         if (j == i) return;
         const Vec3 d = centres[j] - centres[i];

@@ -73,22 +73,23 @@ class AtomPolyhedra {
   // An upper bound on the rounding error of any of the atom's vertices.
   double vertex_error(std::size_t atom) const { return circumradius_[atom] - scale_[atom]; }
   void vertices(std::size_t atom, std::vector<Vec3>& out) const;
-  // Atoms identical to a lower-indexed one (same centre, radius and frequency): their
-  // polyhedra coincide, and by the rule that ties go to the lower index they add nothing.
-  bool duplicate(std::size_t atom) const { return duplicate_[atom] != 0; }
-  std::size_t duplicates() const;
-  std::size_t face_count() const;  // of all polyhedra
+  // Atoms whose true sphere lies in another atom's closed ball (the smaller of concentric
+  // atoms; of identical atoms all but the lowest index: arrangement::sphere_containers).
+  // They add nothing: no polyhedron, no neighbours, no faces (their area is 0).
+  bool contained(std::size_t atom) const { return contained_[atom] != 0; }
+  std::size_t contained_count() const;
+  std::size_t face_count() const;  // of all polyhedra but the contained atoms'
 
  private:
   std::vector<PolyhedronTemplate> templates_;
   std::vector<std::uint16_t> template_of_;
   std::vector<Vec3> centre_;
   std::vector<double> scale_, circumradius_, inradius_;
-  std::vector<std::uint8_t> duplicate_;
+  std::vector<std::uint8_t> contained_;
 };
 
 // Atoms whose polyhedra can meet: centres closer than the sum of circumradii, found with a
-// uniform cell grid. Compressed rows, each sorted by atom index; duplicates have no row.
+// uniform cell grid. Compressed rows, each sorted by atom index; contained atoms have no row.
 struct NeighbourList {
   std::vector<std::uint32_t> first;  // size atoms + 1
   std::vector<std::uint32_t> atoms;

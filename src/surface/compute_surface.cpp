@@ -52,6 +52,7 @@ class Pipeline {
     surface_options.spheres = options_.spheres;
     surface_options.method = method;
     surface_options.threads = threads_;
+    surface_options.cancel = options_.cancel;
     if (options_.progress)
       surface_options.progress = [this](std::size_t done, std::size_t total) {
         options_.progress(SurfaceStage::union_, done, total);
@@ -130,6 +131,7 @@ class Pipeline {
   }
 
   void report(SurfaceStage stage, std::size_t done, std::size_t total) const {
+    throw_if_cancelled(options_.cancel);
     if (options_.progress) options_.progress(stage, done, total);
   }
 
@@ -235,6 +237,7 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   pipeline.report(SurfaceStage::measures, 0, 1);
   const bool exact = options.exact_areas && options.surface == SurfaceKind::sas;
   if (exact) result.exact = compute_areas(atoms, options.spheres).arrangement;
+  throw_if_cancelled(options.cancel);
   result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size(), exact ? &result.exact : nullptr,
                                     &result.component_shells);
   result.seconds.measures = seconds_since(clock);

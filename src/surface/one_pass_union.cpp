@@ -727,7 +727,7 @@ void AtomTrimmer::split_and_classify(AtomPieces& out, PointTable& table) {
 
 AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   AtomPieces out;
-  if (polyhedra_.duplicate(atom)) return out;
+  if (polyhedra_.contained(atom)) return out;
   atom_ = atom;
   work_.atom = atom;
   work_.own_edge_points.clear();
@@ -879,7 +879,8 @@ SurfaceSizeEstimate estimate_union_size(const AtomPolyhedra& polyhedra, const Ne
 // Every atom's polyhedron trimmed by its neighbours, all atoms in parallel. `progress` (may
 // be empty) is called from thread 0 every 256 atoms, and once at the end.
 std::vector<AtomPieces> trim_atoms(const AtomPolyhedra& polyhedra, const NeighbourList& neighbours, int threads,
-                                   const std::function<void(std::size_t, std::size_t)>& progress) {
+                                   const std::function<void(std::size_t, std::size_t)>& progress,
+                                   const CancelFlag* cancel) {
   const std::size_t atom_count = polyhedra.size();
   const auto n = static_cast<std::int64_t>(atom_count);
   std::vector<AtomPieces> pieces(atom_count);
@@ -890,12 +891,16 @@ std::vector<AtomPieces> trim_atoms(const AtomPolyhedra& polyhedra, const Neighbo
     AtomTrimmer trimmer(polyhedra, neighbours);
 #pragma omp for schedule(dynamic, 4)
     for (std::int64_t i = 0; i < n; ++i) {
+      // Skipped rather than thrown once cancelled: an exception per remaining atom would
+      // cost more than the atoms.
+      if (cancel_requested(cancel)) continue;
       errors.run(i, [&] { pieces[i] = trimmer.trim(static_cast<std::uint32_t>(i)); });
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (progress && omp_get_thread_num() == 0 && finished % 256 == 0) progress(finished, atom_count);
     }
   }
   errors.rethrow();
+  throw_if_cancelled(cancel);
   if (progress) progress(atom_count, atom_count);
   return pieces;
 }
@@ -1134,17 +1139,16 @@ std::size_t count_open_edges(const Mesh& mesh, int threads) {
 OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
                              const std::function<void(std::size_t, std::size_t)>& progress,
                              const std::function<void(const SurfaceSizeEstimate&)>& check_size,
-                             std::uint64_t estimate_size_above) {
+                             std::uint64_t estimate_size_above, const CancelFlag* cancel) {
   OnePassResult result;
   auto start = Clock::now();
   const AtomPolyhedra polyhedra(atoms, options);
   const NeighbourList neighbours = find_neighbours(polyhedra);
   if (check_size) {
-    std::uint64_t sphere_faces = 0;
-    for (std::size_t i = 0; i < polyhedra.size(); ++i) sphere_faces += polyhedra.shape(i).unit.faces.size();
+    const std::uint64_t sphere_faces = polyhedra.face_count();
     if (sphere_faces > estimate_size_above) check_size(estimate_union_size(polyhedra, neighbours, threads));
   }
-  std::vector<AtomPieces> pieces = trim_atoms(polyhedra, neighbours, threads, progress);
+  std::vector<AtomPieces> pieces = trim_atoms(polyhedra, neighbours, threads, progress, cancel);
   result.stats.seconds_trim = seconds_since(start);
 
   // Join: atoms in index order, points merged by definition, then points equal by exact
@@ -1167,7 +1171,7 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   result.stats.open_edges = count_open_edges(mesh, threads);
   result.stats.seconds_join = seconds_since(start);
   result.stats.atoms = atoms.size();
-  result.stats.duplicate_atoms = polyhedra.duplicates();
+  result.stats.contained_atoms = polyhedra.contained_count();
   result.stats.neighbour_pairs = neighbours.atoms.size() / 2;
   result.stats.faces_in = polyhedra.face_count();
   return result;

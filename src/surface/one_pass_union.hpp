@@ -38,10 +38,11 @@ struct OnePassResult {
 // `progress` (may be empty) is called from one thread with (atoms done, atoms in all).
 // `check_size` (may be empty) is called before the pass with the union's size estimated from
 // a sample of atoms, when the spheres have more than `estimate_size_above` faces; it may
-// throw to stop before the memory is spent.
+// throw to stop before the memory is spent. `cancel` (may be null) is read before each
+// atom's trim: once set, the remaining atoms are skipped and the call throws Cancelled.
 OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& options, int threads,
                              const std::function<void(std::size_t, std::size_t)>& progress = {},
                              const std::function<void(const SurfaceSizeEstimate&)>& check_size = {},
-                             std::uint64_t estimate_size_above = 0);
+                             std::uint64_t estimate_size_above = 0, const CancelFlag* cancel = nullptr);
 
 }  // namespace molsurf::surface_detail

@@ -138,7 +138,8 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   const ThreadCountScope thread_count(threads);
   if (options.method == SurfaceMethod::one_pass) {
     surface_detail::OnePassResult one_pass = surface_detail::one_pass_union(atoms, options.spheres, threads, options.progress,
-                                                                             options.check_size, options.estimate_size_above);
+                                                                             options.check_size, options.estimate_size_above,
+                                                                             options.cancel);
     result.one_pass = one_pass.stats;
     if (one_pass.stats.open_edges == 0) {
       result.mesh = std::move(one_pass.mesh);
@@ -152,12 +153,12 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   }
   result.method = SurfaceMethod::pairwise;
 
-  // Identical atoms add nothing to the union (the lowest index stands for all, as in the
-  // one-pass method); merging copies only multiplies coincident faces.
+  // Atoms inside another's ball add nothing to the union (copies: the lowest index stands
+  // for all; as in the one-pass method); merging them only multiplies coincident faces.
   std::vector<std::uint32_t> order = spatial_order(atoms);
   {
     const surface_detail::AtomPolyhedra polyhedra(atoms, options.spheres);
-    std::erase_if(order, [&](std::uint32_t a) { return polyhedra.duplicate(a); });
+    std::erase_if(order, [&](std::uint32_t a) { return polyhedra.contained(a); });
   }
   std::size_t height = 0;  // of the whole tree
   while ((std::size_t{1} << height) < order.size()) ++height;
@@ -182,6 +183,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t k = 0; k < subtree_count; ++k)
     errors.run(k, [&] {
+      if (cancel_requested(options.cancel)) return;
       level[k] = tree.evaluate(subtree_height, static_cast<std::size_t>(k), subtree_levels[k]);
       std::size_t merges = 0;
       for (const SurfaceLevel& l : subtree_levels[k]) merges += l.merges;
@@ -192,6 +194,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
       }
     });
   errors.rethrow();
+  throw_if_cancelled(options.cancel);
   for (const auto& levels : subtree_levels)
     for (std::size_t h = 0; h < height; ++h) result.level_stats[h] += levels[h];
   result.seconds.subtrees = std::chrono::duration<double>(std::chrono::steady_clock::now() - bottom_start).count();
@@ -206,6 +209,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     std::vector<BooleanStats> merge_stats(pairs);
     const auto level_start = std::chrono::steady_clock::now();
     auto merge = [&](std::int64_t k) {
+      throw_if_cancelled(options.cancel);
       BooleanResult merged = boolean(*level[2 * k], *level[2 * k + 1], BooleanOp::union_);
       merge_stats[k] = merged.stats;
       next[k] = std::move(merged.mesh);

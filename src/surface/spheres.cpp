@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "common/size_text.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/resource_limits.hpp"
@@ -52,10 +53,16 @@ SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& option
 
 namespace {
 
+using detail::count_text;
+using detail::gigabytes_text;
+
 constexpr double kSaturated = 1.8e19;  // just below 2^64
 
-// 20 n^2 faces of the atom's icosphere, in double so that no frequency overflows.
-double sphere_faces(const Atom& atom, const SphereOptions& options) {
+// 20 n^2 faces of the icosphere of an atom of radius `radius` (without the probe), in
+// double so that no frequency overflows.
+double sphere_faces(double radius, const SphereOptions& options) {
+  Atom atom;
+  atom.radius = radius;
   double n = options.frequency;
   if (options.frequency <= 0) {
     const double r = density_radius(atom, options);
@@ -72,19 +79,16 @@ std::uint64_t saturate(double value) {
                                                       : static_cast<std::uint64_t>(value);
 }
 
-std::string count(std::uint64_t value) {
-  if (value == std::numeric_limits<std::uint64_t>::max()) return "more than 1.8e19";
-  char text[32];
-  if (value >= 10'000'000) std::snprintf(text, sizeof text, "%.3g", static_cast<double>(value));
-  else std::snprintf(text, sizeof text, "%llu", static_cast<unsigned long long>(value));
-  return text;
-}
-
-std::string gigabytes(std::uint64_t bytes) {
-  if (bytes == std::numeric_limits<std::uint64_t>::max()) return "more than 1e10 GB";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g GB", static_cast<double>(bytes) / 1e9);
-  return text;
+// All spheres' faces, and the largest's, from `count` radii (without the probe).
+template <class RadiusOf>
+ResourceEstimate estimate_from_radii(std::size_t count, RadiusOf&& radius_of, const SphereOptions& options) {
+  double total = 0, largest = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double faces = sphere_faces(radius_of(i), options);
+    total += faces;
+    largest = std::max(largest, faces);
+  }
+  return {saturate(total), saturate(largest), saturate(total * static_cast<double>(kBytesPerSphereFace))};
 }
 
 std::string describe(const Atom& atom, std::size_t index) {
@@ -106,40 +110,44 @@ std::string describe(const Atom& atom, std::size_t index) {
 }  // namespace
 
 ResourceEstimate estimate_resources(std::span<const Atom> atoms, const SphereOptions& options) {
-  double total = 0, largest = 0;
-  for (const Atom& atom : atoms) {
-    const double faces = sphere_faces(atom, options);
-    total += faces;
-    largest = std::max(largest, faces);
-  }
-  return {saturate(total), saturate(largest), saturate(total * static_cast<double>(kBytesPerSphereFace))};
+  return estimate_from_radii(atoms.size(), [&](std::size_t i) { return atoms[i].radius; }, options);
 }
 
 void check_sphere_resources(const std::filesystem::path& input, std::span<const Atom> atoms,
                             const SphereOptions& options, std::uint64_t max_faces) {
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const double r = sphere_radius(atoms[i], options);
-    if (!(r > 0) || !std::isfinite(r)) {
-      char radius[32];
-      std::snprintf(radius, sizeof radius, "%g", atoms[i].radius);
-      fail(input, describe(atoms[i], i) + " has radius " + radius +
-                      (options.probe == 0 ? ", and with --probe 0 its sphere is a point, which has no surface; "
-                                            "give it a positive radius or use a probe radius above 0"
-                                          : ": its sphere radius (radius + probe) must be positive and finite"));
-    }
+    if (r >= kMinSphereRadius && std::isfinite(r)) continue;
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%g", atoms[i].radius);
+    if (r > 0 && std::isfinite(r))
+      fail(input, describe(atoms[i], i) + " has radius " + radius + ": its sphere (radius + probe) is below " +
+                      "1e-06 A, too small to triangulate; give it a radius of at least 1e-06 A");
+    fail(input, describe(atoms[i], i) + " has radius " + radius +
+                    (options.probe == 0 ? ", and with --probe 0 its sphere is a point, which has no surface; "
+                                          "give it a positive radius or use a probe radius above 0"
+                                        : ": its sphere radius (radius + probe) must be positive and finite"));
   }
-  const ResourceEstimate estimate = estimate_resources(atoms, options);
+  check_sphere_faces(input, estimate_resources(atoms, options), options, max_faces);
+}
+
+ResourceEstimate estimate_resources(std::span<const double> radii, const SphereOptions& options) {
+  return estimate_from_radii(radii.size(), [&](std::size_t i) { return radii[i]; }, options);
+}
+
+void check_sphere_faces(const std::filesystem::path& input, const ResourceEstimate& estimate,
+                        const SphereOptions& options, std::uint64_t max_faces) {
   char settings[96];
   std::snprintf(settings, sizeof settings, "--density %g and --probe %g", options.density, options.probe);
   const std::string how = options.frequency > 0 ? "--frequency " + std::to_string(options.frequency) : settings;
   if (estimate.largest_sphere > kMaxFacesPerSphere)
-    fail(input, "one sphere would have " + count(estimate.largest_sphere) + " faces with " + how +
-                    ", more than the finest sphere allowed (" + count(kMaxFacesPerSphere) +
+    fail(input, "one sphere would have " + count_text(estimate.largest_sphere) + " faces with " + how +
+                    ", more than the finest sphere allowed (" + count_text(kMaxFacesPerSphere) +
                     " faces, --frequency 200); lower --density, or check the radii and --probe");
   if (estimate.sphere_faces > max_faces)
-    fail(input, "the spheres would have " + count(estimate.sphere_faces) + " faces before the union with " + how +
-                    " (about " + gigabytes(estimate.bytes) + " of memory), more than the limit of " +
-                    count(max_faces) + "; lower --density or use --frequency, or raise the limit with --max-faces");
+    fail(input, "the spheres would have " + count_text(estimate.sphere_faces) + " faces before the union with " +
+                    how + " (about " + gigabytes_text(estimate.bytes) + " of memory), more than the limit of " +
+                    count_text(max_faces) + "; lower --density or use --frequency, or raise the limit with --max-faces");
 }
 
 std::uint64_t available_memory_bytes() {
@@ -156,10 +164,10 @@ std::uint64_t available_memory_bytes() {
 void check_surface_memory(const std::filesystem::path& input, const SurfaceSizeEstimate& estimate,
                           std::uint64_t max_bytes) {
   if (estimate.bytes <= max_bytes) return;
-  fail(input, "the surface would have about " + count(estimate.faces) + " faces before cleanup (estimated from " +
+  fail(input, "the surface would have about " + count_text(estimate.faces) + " faces before cleanup (estimated from " +
                   std::to_string(estimate.sampled_atoms) + " of " + std::to_string(estimate.atoms) +
-                  " atoms) and need about " + gigabytes(estimate.bytes) + " of memory, more than the limit of " +
-                  gigabytes(max_bytes) + "; lower --density, or raise the limit with --max-memory");
+                  " atoms) and need about " + gigabytes_text(estimate.bytes) + " of memory, more than the limit of " +
+                  gigabytes_text(max_bytes) + "; lower --density, or raise the limit with --max-memory");
 }
 
 }  // namespace molsurf

@@ -11,6 +11,7 @@
 #include "molsurf/error.hpp"
 #include "molsurf/split_components.hpp"
 #include "volume/tetrahedron_quality.hpp"
+#include "volume/volume_mesh_size.hpp"
 
 #ifdef MOLSURF_HAVE_GMSH
 #include "volume/gmsh_library.hpp"
@@ -217,6 +218,7 @@ VolumeMesh mesh_volume(const Mesh& surface, const VolumeMeshOptions& options) {
   box.min = box.min - margin;
   box.max = box.max + margin;
   const double size = options.box_size > 0 ? options.box_size : std::max(1.0, options.box_margin / 3);
+  volume_detail::check_volume_mesh_memory(box, size, options.max_memory);
 
   const GmshLibrary gmsh;
   const GmshSession session(gmsh);
