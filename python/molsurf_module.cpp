@@ -2,6 +2,7 @@
 // arrays, paths, gemmi.Structure objects) and libmolsurf. Every rule of the surface job
 // lives in the library (compute_surface, read_structure, check_mesh, boolean ...); this
 // file only translates, and releases the GIL while the library works.
+#include <atomic>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -376,7 +377,10 @@ molsurf::SurfaceKind surface_kind(const std::string& name) {
 // bytecodes: a computation on the main thread would see Ctrl-C only when it returns. On a
 // signal the flag is set, the library stops within its current loop step (Cancelled),
 // and the signal's exception (KeyboardInterrupt) is raised here.
-void run_interruptibly(const std::function<void(const molsurf::CancelFlag&)>& work) {
+// `tick`, when given, runs on this thread (with the GIL) at each of those looks and once at
+// the end; an exception from it stops the work as a signal does, and is raised here.
+void run_interruptibly(const std::function<void(const molsurf::CancelFlag&)>& work,
+                       const std::function<void()>& tick = {}) {
   molsurf::CancelFlag cancel{false};
   std::mutex mutex;
   std::condition_variable finished_signal;
@@ -393,6 +397,7 @@ void run_interruptibly(const std::function<void(const molsurf::CancelFlag&)>& wo
     finished_signal.notify_all();
   });
   bool interrupted = false;
+  std::exception_ptr tick_failure;
   while (true) {
     {
       py::gil_scoped_release release;
@@ -403,19 +408,40 @@ void run_interruptibly(const std::function<void(const molsurf::CancelFlag&)>& wo
       interrupted = true;
       cancel.store(true, std::memory_order_relaxed);
     }
+    if (!interrupted && !tick_failure && tick) {
+      try {
+        tick();
+      } catch (...) {
+        tick_failure = std::current_exception();
+        cancel.store(true, std::memory_order_relaxed);
+      }
+    }
   }
   worker.join();
   if (interrupted) throw py::error_already_set();
+  if (tick_failure) std::rethrow_exception(tick_failure);
   if (failure) std::rethrow_exception(failure);
+  if (tick) tick();  // the last state
 }
+
+// Where a surface job is, as its progress callback last said (written from any thread,
+// read by the thread that reports it to Python).
+struct ProgressState {
+  std::atomic<int> stage{-1};
+  std::atomic<std::size_t> done{0}, total{0};
+  int reported_stage = -1;
+  std::size_t reported_done = ~std::size_t{0};
+};
 
 PySurface surface_py(py::object structure, py::object centres, py::object radii, const std::string& surface,
                      double probe, double density,
                      std::optional<int> frequency, const std::string& method, bool cleanup, bool outer_only,
                      bool area_corrected, bool check, int threads, std::uint64_t max_faces, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
-                     std::optional<std::filesystem::path> radius_file) {
+                     std::optional<std::filesystem::path> radius_file, py::object progress) {
   threads = checked_probe_and_threads(probe, threads);
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw Error("progress: must be callable as progress(stage, done, total), or None");
   if (!std::isfinite(density) || density <= 0) throw Error("density: must be a finite number > 0 (vertices/A^2)");
   if (frequency && (*frequency < 1 || *frequency > 200)) throw Error("frequency: must be 1 to 200");
 
@@ -456,6 +482,26 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
   options.source = data->structure->report.file;
   data->spheres = options.spheres;
   data->kind = options.surface;
+  // progress(stage, done, total): called on this thread, with the latest state, each time
+  // it changed (at most 20 times a second).
+  ProgressState state;
+  std::function<void()> tick;
+  if (!progress.is_none()) {
+    options.progress = [&state](molsurf::SurfaceStage stage, std::size_t done, std::size_t total) {
+      state.done.store(done, std::memory_order_relaxed);
+      state.total.store(total, std::memory_order_relaxed);
+      state.stage.store(static_cast<int>(stage), std::memory_order_relaxed);
+    };
+    tick = [&state, &progress] {
+      const int stage = state.stage.load(std::memory_order_relaxed);
+      const std::size_t done = state.done.load(std::memory_order_relaxed);
+      if (stage < 0 || (stage == state.reported_stage && done == state.reported_done)) return;
+      state.reported_stage = stage;
+      state.reported_done = done;
+      progress(molsurf::surface_stage_name(static_cast<molsurf::SurfaceStage>(stage)), done,
+               state.total.load(std::memory_order_relaxed));
+    };
+  }
   run_interruptibly([&](const molsurf::CancelFlag& cancel) {
     options.cancel = &cancel;
     data->computed = molsurf::compute_surface(data->structure->atoms, options);
@@ -470,7 +516,7 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
       data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
     }
-  });
+  }, tick);
   return {std::move(data)};
 }
 
@@ -1197,12 +1243,12 @@ PYBIND11_MODULE(molsurf, m) {
         "method"_a = "one-pass", "cleanup"_a = true, "outer_only"_a = false, "area_corrected"_a = true,
         "check"_a = true, "threads"_a = 0, "max_faces"_a = molsurf::kDefaultMaxSphereFaces, "model"_a = py::none(),
         "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
-        "radius_set"_a = "protor", "radius_file"_a = py::none(),
+        "radius_set"_a = "protor", "radius_file"_a = py::none(), "progress"_a = py::none(),
         "surface(structure=None, *, centres=None, radii=None, surface='sas', probe=1.4, density=2.0,\n"
         "        frequency=None,\n"
         "        method='one-pass', cleanup=True, outer_only=False, area_corrected=True, check=True,\n"
         "        threads=0, max_faces=300000000, model=None, chains=None, keep_water=False,\n"
-        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None) -> Surface\n\n"
+        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None, progress=None) -> Surface\n\n"
         "The surface of a structure, exactly as the molsurf command computes it (same defaults). The\n"
         "structure is a path (str or os.PathLike; read with the selection keywords, as read_structure),\n"
         "a molsurf.Structure, or a gemmi.Structure (no file written; selection keywords apply); or give\n"
@@ -1214,9 +1260,12 @@ PYBIND11_MODULE(molsurf, m) {
         "  method: 'one-pass' (default) or 'pairwise' (the reference); cleanup: remove slivers;\n"
         "  outer_only: drop cavities; area_corrected: scale each icosphere to the sphere's area\n"
         "  (False: inscribed); check: run the exact self-intersection test (closedness always is);\n"
-        "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs.\n"
-        "The GIL is released while it runs; Ctrl-C (KeyboardInterrupt) stops it at the next stage\n"
-        "(union, cleanup, check). Raises molsurf.Error for bad input.\n"
+        "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs;\n"
+        "  progress: a callable, progress(stage, done, total), called on the calling thread as the job\n"
+        "    goes (stage 'union', 'cleanup', 'check' or 'measures'; at most 20 times a second); an\n"
+        "    exception it raises stops the job and is raised by surface().\n"
+        "The GIL is released while it runs; Ctrl-C (KeyboardInterrupt) stops it within a moment.\n"
+        "Raises molsurf.Error for bad input.\n"
         "area, volume, area_per_atom, area_per_residue and shells are the true spheres' (exact, as the\n"
         "command's report and CSV tables); facet_area, facet_volume, facet_area_per_atom and components\n"
         "are the mesh's.");

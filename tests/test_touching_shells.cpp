@@ -146,20 +146,31 @@ TEST(TouchingShells, BooleanOfTouchingSolidsIsRefused) {
   EXPECT_EQ(overlap.exit_code, 0) << overlap.err;
 }
 
-// A sphere too small for its coordinates is refused plainly; at the origin it is fine.
+// A sphere too small to triangulate is refused plainly: under 1e-6 A anywhere, and under
+// 2^-30 of its coordinates far from the origin; near the origin a 1e-5 A sphere is fine.
 TEST(TouchingShells, TinySpheresFarFromTheOriginAreAPlainError) {
   ComputeSurfaceOptions o;
   o.spheres.probe = 0;
-  for (const double radius : {1e-14, 1e-12}) {
-    const std::vector<Atom> far{atom_at({1e4, 2, 3}, radius), atom_at({0, 0, 0}, 1)};
+  const auto message = [&](const std::vector<Atom>& atoms) {
     try {
-      compute_surface(far, o);
-      ADD_FAILURE() << radius << ": no error";
+      compute_surface(atoms, o);
+    } catch (const SurfaceCheckFailed& failed) {
+      return std::string("a failed check: ") + failed.what();
     } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("too small for its position"), std::string::npos) << e.what();
+      return std::string(e.what());
     }
+    return std::string("no error");
+  };
+  for (const double radius : {1e-14, 1e-310}) {
+    EXPECT_NE(message({atom_at({1e4, 2, 3}, radius), atom_at({0, 0, 0}, 1)}).find("too small"), std::string::npos)
+        << radius;
+    EXPECT_NE(message({atom_at({0, 0, 0}, radius)}).find("too small to triangulate"), std::string::npos) << radius;
   }
-  const std::vector<Atom> origin{atom_at({0, 0, 0}, 1e-14)};
+  for (const double x : {1e5, 1e9})
+    EXPECT_NE(message({atom_at({x, 2, 3}, 1e-5), atom_at({0, 0, 0}, 1)}).find("too small for its position"),
+              std::string::npos)
+        << x;
+  const std::vector<Atom> origin{atom_at({0, 0, 0}, 1e-5)};
   EXPECT_TRUE(check_mesh(compute_surface(origin, o).mesh).valid());
 }
 
