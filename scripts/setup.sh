@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 preset="${1:-release}"
 
 packages=(build-essential cmake ninja-build pkg-config
-  gemmi-dev tao-pegtl-dev zlib1g-dev libdeflate-dev libeigen3-dev libvtk9-dev libcli11-dev
+  gemmi-dev tao-pegtl-dev zlib1g-dev libdeflate-dev libvtk9-dev libcli11-dev
   googletest libgtest-dev nlohmann-json3-dev libgmp-dev libmpfr-dev libcgal-dev libmimalloc-dev
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-gemmi
   python3-matplotlib python3-meshio python3-mdtraj
