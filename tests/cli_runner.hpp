@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 
@@ -59,5 +61,13 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+// The number after "key": in a JSON text (the first occurrence).
+inline double json_number(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\": (-?[0-9.eE+-]+)");
+  std::smatch m;
+  if (!std::regex_search(json, m, pattern)) throw std::runtime_error("no " + key + " in the JSON");
+  return std::stod(m[1]);
+}
 
 }  // namespace molsurf::testing

@@ -19,19 +19,12 @@
 namespace molsurf {
 namespace {
 
+using testing::json_number;
 using testing::read_text;
 using testing::run_molsurf;
 using testing::TempDir;
 
 const std::string kData = MOLSURF_DATA_DIR;
-
-// The number after "key": in a JSON text (the first occurrence).
-double json_number(const std::string& json, const std::string& key) {
-  const std::regex pattern("\"" + key + "\": (-?[0-9.eE+-]+)");
-  std::smatch m;
-  if (!std::regex_search(json, m, pattern)) throw std::runtime_error("no " + key + " in the JSON");
-  return std::stod(m[1]);
-}
 
 // The last column of each data row of a CSV file.
 std::vector<double> last_column(const std::string& csv) {

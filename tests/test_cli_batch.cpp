@@ -14,6 +14,7 @@
 namespace molsurf {
 namespace {
 
+using testing::json_number;
 using testing::read_text;
 using testing::run_molsurf;
 using testing::TempDir;
@@ -25,12 +26,6 @@ std::vector<std::string> lines(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) out.push_back(line);
   return out;
-}
-
-double json_number(const std::string& json, const std::string& key) {
-  std::smatch m;
-  if (!std::regex_search(json, m, std::regex("\"" + key + "\": (-?[0-9.eE+-]+)"))) return -1;
-  return std::stod(m[1]);
 }
 
 // A folder with two structures, one in a subfolder, a broken one, and a file that is no

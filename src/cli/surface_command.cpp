@@ -322,12 +322,24 @@ void add_sasa_structure_output(const SurfaceCommand& command, std::vector<Output
 }
 
 // Every output the options ask for, the surface first; refuses a volume mesh that cannot be made.
-std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, const std::filesystem::path& out) {
-  std::vector<OutputRequest> outputs{{out, "-o", true}};
+// The report files the options ask for: --json, --per-atom, --per-residue, --per-chain.
+void add_report_outputs(const SurfaceCommand& command, std::vector<OutputRequest>& outputs) {
   if (command.json_option->count() > 0) outputs.push_back({command.json, "--json"});
   if (command.per_atom_option->count() > 0) outputs.push_back({command.per_atom, "--per-atom"});
   if (command.per_residue_option->count() > 0) outputs.push_back({command.per_residue, "--per-residue"});
   if (command.per_chain_option->count() > 0) outputs.push_back({command.per_chain, "--per-chain"});
+}
+
+// Where the text report goes: standard error when a report takes standard output.
+std::ostream& text_stream(std::span<const OutputRequest> outputs) {
+  for (const OutputRequest& request : outputs)
+    if (request.path == kStandardOutput) return std::cerr;
+  return std::cout;
+}
+
+std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, const std::filesystem::path& out) {
+  std::vector<OutputRequest> outputs{{out, "-o", true}};
+  add_report_outputs(command, outputs);
   add_sasa_structure_output(command, outputs);
   if (command.volume_option->count() > 0) {
     outputs.push_back({command.volume_mesh, "--volume-mesh", true});
@@ -637,10 +649,7 @@ int SurfaceCommand::run() const {
   check_format_options(*this, out);
   // --format's reports stand alone on standard output, as FreeSASA's do.
   const bool silent = quiet || !formats.empty();
-  // With a report on standard output, the text report goes to standard error.
-  bool report_to_stdout = false;
-  for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
-  std::ostream& text = report_to_stdout ? std::cerr : std::cout;
+  std::ostream& text = text_stream(outputs);
 
   const ReadOptions options = read_options(*this);
   note_threads(*this);
@@ -723,18 +732,13 @@ int SurfaceCommand::run_areas_only() const {
   if (all_models && sasa_structure_option->count() > 0)
     throw Error("--sasa-structure writes one model: drop --all-models, or give --model N");
   std::vector<OutputRequest> outputs;
-  if (json_option->count() > 0) outputs.push_back({json, "--json"});
-  if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
-  if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
-  if (per_chain_option->count() > 0) outputs.push_back({per_chain, "--per-chain"});
+  add_report_outputs(*this, outputs);
   add_sasa_structure_output(*this, outputs);
   if (!formats.empty()) outputs.push_back({kStandardOutput, "--format"});
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
   const bool silent = quiet || !formats.empty();  // --format's reports stand alone
-  bool report_to_stdout = false;
-  for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
-  std::ostream& text = report_to_stdout ? std::cerr : std::cout;
+  std::ostream& text = text_stream(outputs);
 
   note_threads(*this);
   SurfaceReport report;
@@ -793,13 +797,8 @@ int SurfaceCommand::run_model_meshes() const {
                 " must hold {model}, which each model's number replaces (e.g. -o 1j8k_{model}.vtp)");
   check_format_options(*this, output);
   std::vector<OutputRequest> outputs;
-  if (json_option->count() > 0) outputs.push_back({json, "--json"});
-  if (per_atom_option->count() > 0) outputs.push_back({per_atom, "--per-atom"});
-  if (per_residue_option->count() > 0) outputs.push_back({per_residue, "--per-residue"});
-  if (per_chain_option->count() > 0) outputs.push_back({per_chain, "--per-chain"});
-  bool report_to_stdout = false;
-  for (const OutputRequest& request : outputs) report_to_stdout |= request.path == kStandardOutput;
-  std::ostream& text = report_to_stdout ? std::cerr : std::cout;
+  add_report_outputs(*this, outputs);
+  std::ostream& text = text_stream(outputs);
 
   note_threads(*this);
   SurfaceReport report;
