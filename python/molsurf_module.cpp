@@ -918,6 +918,8 @@ PYBIND11_MODULE(molsurf, m) {
       .def_readonly("duplicate_faces", &molsurf::MeshCheck::duplicate_faces)
       .def_readonly("intersecting_pairs", &molsurf::MeshCheck::intersecting_pairs, "Face pairs that cross.")
       .def_readonly("contact_pairs", &molsurf::MeshCheck::contact_pairs, "Face pairs that only touch.")
+      .def_readonly("defect_pairs_capped", &molsurf::MeshCheck::defect_pairs_capped,
+                    "Counting stopped at 100 000 intersecting or touching pairs: the counts are lower bounds.")
       .def_readonly("non_finite_vertices", &molsurf::MeshCheck::non_finite_vertices)
       .def_readonly("self_intersections_checked", &molsurf::MeshCheck::self_intersections_checked)
       .def_readonly("components", &molsurf::MeshCheck::components)
@@ -936,7 +938,7 @@ PYBIND11_MODULE(molsurf, m) {
                             "misoriented_edges"_a = c.misoriented_edges,
                             "nonmanifold_vertices"_a = c.nonmanifold_vertices,
                             "degenerate_faces"_a = c.degenerate_faces, "duplicate_faces"_a = c.duplicate_faces,
-                            "intersecting_pairs"_a = c.intersecting_pairs, "contact_pairs"_a = c.contact_pairs,
+                            "intersecting_pairs"_a = c.intersecting_pairs, "contact_pairs"_a = c.contact_pairs, "defect_pairs_capped"_a = c.defect_pairs_capped,
                             "non_finite_vertices"_a = c.non_finite_vertices,
                             "self_intersections_checked"_a = c.self_intersections_checked,
                             "components"_a = c.components, "inward_components"_a = c.inward_components,
@@ -1039,13 +1041,26 @@ PYBIND11_MODULE(molsurf, m) {
           for (const std::string& defect : check.defects()) why += "\n  - " + defect;
           throw Error(std::string(name) + ": not a valid closed surface, so no Boolean is defined:" + why);
         }
-        return PyMesh{std::make_shared<const molsurf::Mesh>(molsurf::boolean(*mesh_a, *mesh_b, operation).mesh)};
+        molsurf::BooleanResult r = molsurf::checked_boolean(*mesh_a, *mesh_b, operation);
+        if (!r.check.valid()) {
+          std::string why;
+          for (const std::string& defect : r.check.defects()) why += "\n  - " + defect;
+          throw Error("the " + op + " failed its check:" + why);
+        }
+        if (const std::string note = molsurf::boolean_note(r.stats); !note.empty()) {
+          py::gil_scoped_acquire acquire;
+          if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
+        }
+        return PyMesh{std::make_shared<const molsurf::Mesh>(std::move(r.mesh))};
       },
       "op"_a, "a"_a, "b"_a,
       "boolean(op, a, b) -> Mesh\n\n"
       "The exact union, intersection or difference (a minus b) of two closed meshes, each a Mesh or a\n"
       "(vertices, faces) pair of arrays. Both must be valid closed surfaces (molsurf.check); the result\n"
-      "is one too (possibly empty). Face tags of the result are those of the source faces.");
+      "is one too (possibly empty): it is checked, and an error is raised if it fails. Where the operands\n"
+      "touch, or their sheets lie closer than rounding to doubles keeps apart, b is moved by a tiny step\n"
+      "(2^-36 of the coordinates' scale first) and a UserWarning says so. Face tags of the result are\n"
+      "those of the source faces.");
 
   // ---- Shells of the true spheres ----
   py::class_<molsurf::ShellReport>(m, "Shell",

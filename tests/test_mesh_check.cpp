@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "mesh_fixtures.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
@@ -550,3 +551,51 @@ TEST(MeshCheckNesting, ManyComponentsEachPlacedByTheBoxesHoldingIt) {
   c = check_mesh(m, options);
   EXPECT_EQ(c.inward_components, 3u);
 }
+
+namespace molsurf {
+namespace {
+
+// Copies of one tetrahedron at one place: every pair of copies overlaps in 4 face pairs and
+// touches in 12, so the defects grow quadratically. Counting stops at max_defect_pairs
+// (the verdict needs one), and the counts are then lower bounds, said so.
+Mesh coincident_tetrahedra(int copies) {
+  Mesh pile;
+  const Mesh one = fixtures::tetrahedron();
+  for (int k = 0; k < copies; ++k) {
+    const auto base = static_cast<Index>(pile.vertices.size());
+    pile.vertices.insert(pile.vertices.end(), one.vertices.begin(), one.vertices.end());
+    for (const Triangle& t : one.faces) pile.faces.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  return pile;
+}
+
+TEST(MeshCheck, CountingDefectPairsStopsAtTheCap) {
+  const Mesh fifty = coincident_tetrahedra(50);
+  MeshCheckOptions all;
+  all.max_defect_pairs = 0;
+  const MeshCheck counted = check_mesh(fifty, all);
+  EXPECT_EQ(counted.intersecting_pairs, 4u * 1225);
+  EXPECT_EQ(counted.contact_pairs, 12u * 1225);
+  EXPECT_FALSE(counted.defect_pairs_capped);
+  for (const std::string& d : counted.defects()) EXPECT_EQ(d.find("at least"), std::string::npos) << d;
+
+  MeshCheckOptions capped;
+  capped.max_defect_pairs = 1000;
+  const MeshCheck stopped = check_mesh(fifty, capped);
+  EXPECT_TRUE(stopped.defect_pairs_capped);
+  EXPECT_FALSE(stopped.valid());
+  EXPECT_GE(stopped.intersecting_pairs + stopped.contact_pairs, 1000u);
+  EXPECT_LT(stopped.intersecting_pairs + stopped.contact_pairs, 16u * 1225);
+  bool said = false;
+  for (const std::string& d : stopped.defects()) said |= d.rfind("at least ", 0) == 0;
+  EXPECT_TRUE(said);
+
+  // A thousand copies (8 M defect pairs if all were counted) under the default cap.
+  const MeshCheck pile = check_mesh(coincident_tetrahedra(1000));
+  EXPECT_TRUE(pile.defect_pairs_capped);
+  EXPECT_EQ(pile.verdict(), MeshCheck::Verdict::invalid);
+  EXPECT_LT(pile.intersecting_pairs + pile.contact_pairs, 2 * MeshCheckOptions{}.max_defect_pairs);
+}
+
+}  // namespace
+}  // namespace molsurf

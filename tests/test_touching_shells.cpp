@@ -121,29 +121,47 @@ TEST(TouchingShells, CheckReportsTouchingSheetsAsADefect) {
   }
 }
 
-// Solids that meet along an edge or at a corner: the union holds the sheets apart but
-// touching, so its check fails, and the command writes nothing and names the place. Over a
-// whole face they join into one solid, with nothing touching.
-TEST(TouchingShells, BooleanOfTouchingSolidsIsRefused) {
+// Solids that meet along an edge or at a corner: the exact union holds the sheets apart but
+// touching, so no rounding of it passes the check. checked_boolean (and the command) then
+// move B by a step far below any feature and far above rounding, and say so, naming the
+// place; the result is valid. Over a whole face they join into one solid, with nothing
+// touching and nothing moved.
+TEST(TouchingShells, BooleanOfTouchingSolidsMovesBApart) {
   const Mesh a = make_box({0, 0, 0}, {1, 1, 1});
   for (const Vec3 offset : {Vec3{1, 1, 0}, Vec3{1, 1, 1}}) {
     const Mesh b = make_box(offset, offset + Vec3{1, 1, 1});
-    const MeshCheck c = check_mesh(boolean(a, b, BooleanOp::union_).mesh);
-    EXPECT_FALSE(c.valid()) << offset.x << offset.y << offset.z;
-    EXPECT_GT(c.contact_pairs, 0u);
+    const MeshCheck exact = check_mesh(boolean(a, b, BooleanOp::union_).mesh);
+    EXPECT_FALSE(exact.valid()) << offset.x << offset.y << offset.z;
+    EXPECT_GT(exact.contact_pairs, 0u);
+    const BooleanResult moved = checked_boolean(a, b, BooleanOp::union_);
+    EXPECT_TRUE(moved.check.valid()) << offset.x << offset.y << offset.z;
+    const double shift = norm(moved.stats.b_moved_by);
+    EXPECT_GT(shift, 0);
+    EXPECT_LE(shift, std::ldexp(4.0, -36) * 1.0001);  // the first step: scale 4, the power of two above 2
+    EXPECT_NEAR(moved.check.volume, 2.0, 1e-9);
+    EXPECT_NE(boolean_note(moved.stats).find("touch"), std::string::npos);
+    // The difference keeps A whole: nothing touches, nothing moves.
+    const BooleanResult difference = checked_boolean(a, b, BooleanOp::difference);
+    EXPECT_TRUE(difference.check.valid());
+    EXPECT_EQ(norm(difference.stats.b_moved_by), 0.0);
   }
-  EXPECT_TRUE(check_mesh(boolean(a, make_box({1, 0, 0}, {2, 1, 1}), BooleanOp::union_).mesh).valid());
+  const BooleanResult joined = checked_boolean(a, make_box({1, 0, 0}, {2, 1, 1}), BooleanOp::union_);
+  EXPECT_TRUE(joined.check.valid());
+  EXPECT_EQ(norm(joined.stats.b_moved_by), 0.0);
+  EXPECT_TRUE(boolean_note(joined.stats).empty());
   testing::TempDir dir;
   write_mesh(dir.path() / "a.off", a);
   write_mesh(dir.path() / "b.off", make_box({1, 1, 0}, {2, 2, 1}));
   const auto r = testing::run_molsurf("boolean union a.off b.off -o u.off", dir.path());
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("touch without overlapping near"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "u.off"));
-  // Overlapping by a little instead: one valid solid.
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("note: near ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the result is that of B moved by"), std::string::npos) << r.out;
+  EXPECT_TRUE(check_mesh(read_mesh(dir.path() / "u.off")).valid());
+  // Overlapping by a little instead: one valid solid, nothing moved.
   write_mesh(dir.path() / "c.off", make_box({0.5, 0.5, 0}, {2, 2, 1}));
   const auto overlap = testing::run_molsurf("boolean union a.off c.off -o u.off", dir.path());
   EXPECT_EQ(overlap.exit_code, 0) << overlap.err;
+  EXPECT_EQ(overlap.out.find("moved by"), std::string::npos) << overlap.out;
 }
 
 // A sphere too small to triangulate is refused plainly: under 1e-6 A anywhere, and under

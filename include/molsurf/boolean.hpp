@@ -8,9 +8,12 @@
 // coplanar faces, touching solids and coincident vertices).
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "molsurf/mesh.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/vec3.hpp"
 
 namespace molsurf {
 
@@ -38,6 +41,10 @@ struct BooleanStats {
   // those kept (not enclosed), and kept pieces seen from both sides (open sheets).
   std::size_t envelope_components = 0, envelope_components_kept = 0, two_sided_faces = 0;
   BooleanTimings seconds;
+  // checked_boolean only: how far b was moved because no rounding of the exact result to
+  // doubles is a valid surface (zero: not moved), and where the unmoved result failed.
+  Vec3 b_moved_by{};
+  Vec3 unmoved_defect_near{};
 };
 
 struct BooleanResult {
@@ -45,9 +52,26 @@ struct BooleanResult {
   std::vector<std::uint8_t> face_operand;  // 0: from a, 1: from b
   std::vector<std::uint32_t> face_source;  // index of the source face in its operand
   BooleanStats stats;
+  MeshCheck check;  // checked_boolean only: check_mesh of `mesh`
 };
 
+// The exact Boolean, rounded to doubles and repaired where rounding broke it (not checked).
 BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op);
+
+// The Boolean as the front ends run it: boolean(), then check_mesh of the result. Where
+// the exact result holds sheets that touch, or that lie closer than rounding to doubles
+// can keep apart (a solid minus its mirror image: faces nearly perpendicular to the
+// mirror plane meet their images at dihedral angles of 1e-15, leaving wedges 1e-15 Å
+// thick), no rounding of it is a valid surface. Then b is moved by the first step of a
+// fixed sequence (2^-36, 2^-28, 2^-20 of the coordinates' scale, along fixed directions)
+// whose result passes its check, and stats.b_moved_by says by how much. The result is
+// either valid (check.valid()), empty, or still invalid after every step (callers refuse
+// to write it).
+BooleanResult checked_boolean(const Mesh& a, const Mesh& b, BooleanOp op, const MeshCheckOptions& options = {});
+
+// What a user should know of how the result was made: that b was moved, by how much and
+// why (empty when it was not).
+std::string boolean_note(const BooleanStats& stats);
 
 // The outer envelope of a and b (paper §2.4, visibility): the pieces of both surfaces
 // seen from outside, found by a flood fill from the extreme piece. For two closed solids

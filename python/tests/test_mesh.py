@@ -50,6 +50,23 @@ def test_boolean_of_numpy_boxes_round_trips_through_check(op):
     assert again.volume == pytest.approx(expected[op] + 1, rel=1e-12)
 
 
+def test_boolean_of_boxes_touching_at_an_edge_moves_b_and_warns():
+    # The exact union holds two sheets touching along the edge: no rounding of it is valid,
+    # so b is moved by about 1e-10 and a warning says so; the result is valid.
+    a = box((0, 0, 0), (1, 1, 1))
+    b = box((1, 1, 0), (2, 2, 1))
+    with pytest.warns(UserWarning, match="moved by"):
+        result = molsurf.boolean("union", a, b)
+    check = molsurf.check(result)
+    assert check.valid and check.contact_pairs == 0
+    assert check.volume == pytest.approx(2.0, rel=1e-9)
+    # Overlapping boxes: nothing to move, no warning.
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert molsurf.check(molsurf.boolean("union", a, box((0.5, 0.5, 0), (2, 2, 1)))).valid
+
+
 def test_boolean_refuses_an_open_operand():
     v, f = box((0, 0, 0), (1, 1, 1))
     with pytest.raises(molsurf.Error, match="a: not a valid closed surface"):

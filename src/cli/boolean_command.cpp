@@ -68,7 +68,7 @@ int BooleanCommand::run() const {
                                      : ": not a valid closed surface, so no Boolean is defined:") +
                          why);
   }
-  const BooleanResult r = outer_only ? union_outer_envelope(mesh_a, mesh_b) : boolean(mesh_a, mesh_b, op);
+  BooleanResult r = outer_only ? union_outer_envelope(mesh_a, mesh_b) : checked_boolean(mesh_a, mesh_b, op);
   // From an open operand the envelope is open: its free boundary and the edges where a
   // sheet seen from both sides meets the rest are expected there, nothing else.
   const auto acceptable = [open_input](const MeshCheck& c) {
@@ -76,7 +76,8 @@ int BooleanCommand::run() const {
                          c.duplicate_faces == 0 && c.intersecting_pairs == 0);
   };
   // Checked before anything is written, as the file will hold it (.vert, .stl round).
-  const MeshCheck computed = check_mesh(r.mesh);
+  if (outer_only) r.check = check_mesh(r.mesh);
+  const MeshCheck& computed = r.check;
   const bool empty = r.mesh.faces.empty();
   std::optional<WrittenCheck> written;
   if (!empty) written = check_as_written(output, r.mesh, computed, MeshWriteOptions{}, MeshCheckOptions{}, acceptable);
@@ -113,6 +114,7 @@ int BooleanCommand::run() const {
       std::printf("the result is an open surface, as an open operand makes it: %zu boundary edges, %zu edges where "
                   "a two-sided sheet meets the rest (expected, not a defect)\n",
                   check.boundary_edges, check.nonmanifold_edges);
+    if (const std::string note = boolean_note(r.stats); !note.empty()) std::printf("note: %s\n", note.c_str());
     if (written && !written->note.empty()) std::printf("note: %s\n", written->note.c_str());
   }
   if (empty)
@@ -123,13 +125,15 @@ int BooleanCommand::run() const {
   if (!ok) {
     std::string why;
     for (const std::string& defect : check.defects()) why += (why.empty() ? "" : "; ") + defect;
-    if (check.contact_pairs > 0 && !check.examples_contact.empty()) {
-      // Solids that meet without overlapping there: no valid surface holds both sheets.
-      const Triangle& t = r.mesh.faces[check.examples_contact.front()];
-      const Vec3 c = (1.0 / 3) * (r.mesh.vertices[t[0]] + r.mesh.vertices[t[1]] + r.mesh.vertices[t[2]]);
-      char where[160];
-      std::snprintf(where, sizeof where, " (A and B touch without overlapping near (%.6g, %.6g, %.6g): move one apart, or "
-                    "into the other)", c.x, c.y, c.z);
+    if (!outer_only) {
+      // checked_boolean moved B in every step it has and no result passed.
+      const Vec3& c = r.stats.unmoved_defect_near;
+      char where[240];
+      std::snprintf(where, sizeof where,
+                    " (near (%.6g, %.6g, %.6g) A and B touch, or their sheets lie closer than rounding to doubles "
+                    "keeps apart, and moving B by up to 2^-20 of the coordinates' scale did not resolve it: move "
+                    "one apart, or into the other)",
+                    c.x, c.y, c.z);
       why += where;
     }
     std::fprintf(stderr, "molsurf: error: %s: not written: the result failed its check: %s\n",

@@ -162,10 +162,12 @@ std::string format_mesh_check(const MeshCheck& c, const std::string& file) {
   if (c.self_intersections_checked) {
     t.row("self-intersections",
           (c.intersecting_pairs == 0 ? std::string("none (exact test)")
-                                     : std::to_string(c.intersecting_pairs) + " crossing face pairs") +
+                                     : (c.defect_pairs_capped ? "at least " : "") + std::to_string(c.intersecting_pairs) +
+                                           " crossing face pairs") +
               examples_suffix(c.examples_intersecting, c.intersecting_pairs, "faces"));
     t.row("touching contacts",
-          std::to_string(c.contact_pairs) + (c.contact_pairs ? " face pairs touch without crossing" : "") +
+          (c.defect_pairs_capped && c.contact_pairs ? "at least " : "") + std::to_string(c.contact_pairs) +
+              (c.contact_pairs ? " face pairs touch without crossing" : "") +
               examples_suffix(c.examples_contact, c.contact_pairs, "faces"));
   } else {
     t.row("self-intersections", "not checked");
@@ -207,6 +209,7 @@ std::string mesh_check_json(const MeshCheck& c, const std::string& file) {
   j.field("duplicate_faces", c.duplicate_faces);
   j.field("self_intersections_checked", c.self_intersections_checked);
   j.field("intersecting_pairs", c.intersecting_pairs).field("contact_pairs", c.contact_pairs);
+  j.field("defect_pairs_capped", c.defect_pairs_capped);  // the two counts above are then lower bounds
   j.field("non_finite_vertices", c.non_finite_vertices).field("non_finite_measures", c.non_finite_measures);
   j.key("quality").begin_object();
   j.field("min_angle_deg", c.quality.min_angle_deg).field("mean_min_angle_deg", c.quality.mean_min_angle_deg);

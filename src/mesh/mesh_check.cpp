@@ -33,6 +33,7 @@
 #include <parallel/algorithm>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -337,8 +338,10 @@ std::size_t count_duplicate_faces(const Mesh& mesh, const std::vector<std::uint8
 // whose star is proved embedded, or a proved chain of faces around it: `fans`, may be
 // empty) meet only where they share it; the tree skips whole subtrees of them.
 void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, const FanKeys& fans,
-                              std::size_t max_examples, MeshCheck& result) {
-
+                              const MeshCheckOptions& options, MeshCheck& result) {
+  const std::size_t max_examples = options.max_examples;
+  const std::size_t cap = options.max_defect_pairs == 0 ? ~std::size_t{0} : options.max_defect_pairs;
+  std::atomic<std::size_t> defects_found{0};
   std::size_t intersecting = 0, contacts = 0, tested = 0;
   LowestIndices intersecting_examples(max_examples), contact_examples(max_examples);
   const auto count = static_cast<std::int64_t>(bvh.leaf_count());
@@ -351,17 +354,20 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, con
       errors.run(k, [&] {
         bvh.for_each_pair_at_leaf(static_cast<std::size_t>(k), [&](std::uint32_t face_i, std::uint32_t j) {
           if (!fans.empty() && fans.share(mesh, face_i, j)) return;
+          if (defects_found.load(std::memory_order_relaxed) >= cap) return;
           ++tested;
           switch (geometry::classify_triangle_pair(mesh, face_i, j)) {
             case geometry::TrianglePairRelation::intersecting:
               ++intersecting;
               local_intersecting.add(face_i);
               local_intersecting.add(j);
+              defects_found.fetch_add(1, std::memory_order_relaxed);
               break;
             case geometry::TrianglePairRelation::contact:
               ++contacts;
               local_contact.add(face_i);
               local_contact.add(j);
+              defects_found.fetch_add(1, std::memory_order_relaxed);
               break;
             case geometry::TrianglePairRelation::apart:
             case geometry::TrianglePairRelation::duplicate:  // counted by count_duplicate_faces
@@ -379,6 +385,7 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, con
   result.intersecting_pairs = intersecting;
   result.contact_pairs = contacts;
   result.pairs_tested = tested;
+  result.defect_pairs_capped = defects_found.load() >= cap;
   result.examples_intersecting = intersecting_examples.sorted();
   result.examples_contact = contact_examples.sorted();
   result.self_intersections_checked = true;
@@ -528,7 +535,11 @@ std::vector<std::string> MeshCheck::defects() const {
        "inward components (outer shells with negative volume)", "", &none},
   };
   for (const Defect& d : kinds)
-    if (d.count) lines.push_back(defect_line(d.count, d.singular, d.plural, d.what, *d.examples));
+    if (d.count) {
+      const bool lower_bound = defect_pairs_capped && (d.examples == &examples_intersecting || d.examples == &examples_contact);
+      lines.push_back((lower_bound ? "at least " : "") + defect_line(d.count, d.singular, d.plural, d.what, *d.examples) +
+                      (lower_bound ? " (counting stopped)" : ""));
+    }
   return lines;
 }
 
@@ -604,7 +615,7 @@ MeshCheck check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
         fans = FanKeys(mesh, around, embedded);
         tree->set_keys([&](std::uint32_t f) { return fans.of(mesh, f); });
       }
-      check_self_intersections(mesh, *tree, fans, options.max_examples, result);
+      check_self_intersections(mesh, *tree, fans, options, result);
     }
     check_components(mesh, face_tree, result);
   }
