@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "atom_fixtures.hpp"
+#include "degenerate_placements.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
@@ -179,6 +180,33 @@ TEST(SurfaceMethods, NearlyCoincidentHugeSpheresAreRefusedPlainly) {
   // The same placement with molecular radii is an ordinary surface.
   o.spheres = spheres(1.4, 2);
   EXPECT_TRUE(check_mesh(solvent_accessible_surface(atoms, o).mesh, {}).valid());
+}
+
+// Seeds of the long degenerate battery that once failed. Icosahedral shells at frequency 2,
+// probe 0.7: faces of several atoms' polyhedra meet in one plane, and the one-pass
+// surface's rounding repair collapsed a sliver into a real face folded flat over its
+// neighbours (0.07 A^2 counted twice, no volume, valid to the exact test because rounding
+// kept the sheets an ulp apart); the pairwise surface had none. Icosahedral shells and a
+// lattice at frequency 1, probe 0.7: three rounded points within 5e-16 of one point of
+// the input that the pairwise merges could not join (two crossing pairs).
+TEST(SurfaceMethods, DegenerateSeedsThatOnceFailed) {
+  struct Case {
+    testing::PlacementFamily family;
+    std::uint32_t seed;
+    int frequency;
+  };
+  const Case cases[] = {{testing::PlacementFamily::icosahedral_shell, 1021, 2},
+                        {testing::PlacementFamily::icosahedral_shell, 1030, 2},
+                        {testing::PlacementFamily::icosahedral_shell, 1048, 2},
+                        {testing::PlacementFamily::icosahedral_shell, 1086, 2},
+                        {testing::PlacementFamily::icosahedral_shell, 1091, 2},
+                        {testing::PlacementFamily::icosahedral_shell, 1008, 1},
+                        {testing::PlacementFamily::lattice, 1051, 1}};
+  for (const Case& c : cases) {
+    const testing::DegeneratePlacement p = testing::degenerate_placement(c.family, c.seed);
+    EXPECT_TRUE(testing::methods_agree(p.atoms, spheres(0.7, 2, c.frequency), 1))
+        << p.family << " seed " << c.seed << " frequency " << c.frequency;
+  }
 }
 
 }  // namespace

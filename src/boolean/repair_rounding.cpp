@@ -429,14 +429,22 @@ class Repairer {
     const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(u, v);
     if (on_edge.size() != 2 || !editor_.link_condition(u, v, on_edge)) return false;
     const MeshEdit e = editor_.merge(u, v, on_edge);
-    // A real face moving to u must not turn over; a sliver (rounding may already have
-    // turned it) is judged by the crossing count alone.
+    // A real face moving to u must not turn over. A sliver (rounding may already have
+    // turned it) has no direction of its own: it is judged by the crossing count, unless
+    // the collapse makes it a real face, which must then face as the real faces around
+    // it do (else it lies folded flat over its neighbours, a flap the exact test cannot
+    // see when rounding keeps the sheets an ulp apart).
+    Vec3 around{};
+    for (std::size_t k = 0; k < e.faces.size(); ++k)
+      if (!may_turn_over(m_, m_.faces[e.faces[k]])) around = around + e.reference[k];
     for (std::size_t k = 0; k < e.faces.size(); ++k) {
       if (e.removes(k)) continue;
       const Triangle& t = e.after[k];
       const Vec3 &a = m_.vertices[t[0]], &b = m_.vertices[t[1]], &c = m_.vertices[t[2]];
       if (may_turn_over(m_, m_.faces[e.faces[k]])) {
         if (geometry::collinear3d(a, b, c)) return false;
+        if (!may_turn_over(m_, t) && dot(around, around) > 0 && !MeshEditor::keeps_facing(a, b, c, around, 0))
+          return false;
       } else if (!MeshEditor::keeps_facing(a, b, c, e.reference[k], 0)) {
         return false;
       }

@@ -18,6 +18,18 @@ namespace molsurf {
 
 namespace {
 
+// One merge of the tree. `checked`: the union checked, with the second operand moved by a
+// step far below the facets where no rounding of the exact union is valid
+// (checked_boolean), so that no merge hands a broken operand on; a check per merge more
+// than doubles the method's time (the merges work on the faces near the other operand,
+// the check on all), so it is the second try, when the plain tree's surface fails.
+BooleanResult union_merge(const Mesh& left, const Mesh& right, bool checked) {
+  if (!checked) return boolean(left, right, BooleanOp::union_);
+  MeshCheckOptions quick;
+  quick.max_examples = 1;
+  return checked_boolean(left, right, BooleanOp::union_, quick);
+}
+
 // The leaf order of the merge tree. The tree joins consecutive pairs level by level, so a
 // node at height h covers order positions [k 2^h, (k + 1) 2^h): its left child holds the
 // first 2^(h-1) of them. Each node's atoms are split there by their coordinate along the
@@ -89,8 +101,9 @@ namespace {
 // be empty (an odd end of a level). The same tree whatever the evaluation order.
 class MergeTree {
  public:
-  MergeTree(std::span<const Atom> atoms, const std::vector<std::uint32_t>& order, const SphereOptions& spheres)
-      : atoms_(atoms), order_(order), spheres_(spheres) {}
+  MergeTree(std::span<const Atom> atoms, const std::vector<std::uint32_t>& order, const SphereOptions& spheres,
+            bool checked)
+      : atoms_(atoms), order_(order), spheres_(spheres), checked_(checked) {}
 
   bool exists(std::size_t height, std::size_t k) const { return (k << height) < order_.size(); }
 
@@ -107,7 +120,7 @@ class MergeTree {
       const Mesh left = evaluate(height - 1, 2 * k, levels);
       const Mesh right = evaluate(height - 1, 2 * k + 1, levels);
       start = std::chrono::steady_clock::now();
-      merged = boolean(left, right, BooleanOp::union_);
+      merged = union_merge(left, right, checked_);
     }
     SurfaceLevel& level = levels[height - 1];
     level += merged.stats;
@@ -119,6 +132,7 @@ class MergeTree {
   std::span<const Atom> atoms_;
   const std::vector<std::uint32_t>& order_;
   const SphereOptions& spheres_;
+  bool checked_;
 };
 
 }  // namespace
@@ -126,6 +140,11 @@ class MergeTree {
 const char* surface_method_name(SurfaceMethod method) {
   return method == SurfaceMethod::one_pass ? "one-pass" : "pairwise";
 }
+
+namespace {
+void pairwise_union(std::span<const Atom> atoms, const SurfaceOptions& options, int threads, bool checked,
+                    SurfaceResult& result);
+}  // namespace
 
 SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -152,6 +171,24 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
                       " open edges (a molsurf bug; please report it): the pairwise union was used";
   }
   result.method = SurfaceMethod::pairwise;
+  pairwise_union(atoms, options, threads, /*checked=*/false, result);
+  MeshCheckOptions quick;
+  quick.max_examples = 1;
+  if (!check_mesh(result.mesh, quick).valid()) {
+    // A merge met sheets closer than rounding keeps apart (three rounded points within an
+    // ulp of one point of the input, icosahedral shells): again, each merge checked.
+    result.level_stats.clear();
+    pairwise_union(atoms, options, threads, /*checked=*/true, result);
+  }
+  result.seconds.union_levels =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+namespace {
+
+void pairwise_union(std::span<const Atom> atoms, const SurfaceOptions& options, int threads, bool checked,
+                    SurfaceResult& result) {
 
   // Atoms inside another's ball add nothing to the union (copies: the lowest index stands
   // for all; as in the one-pass method); merging them only multiplies coincident faces.
@@ -162,7 +199,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   }
   std::size_t height = 0;  // of the whole tree
   while ((std::size_t{1} << height) < order.size()) ++height;
-  const MergeTree tree(atoms, order, options.spheres);
+  const MergeTree tree(atoms, order, options.spheres, checked);
   result.level_stats.resize(height);
   const std::size_t total_merges = order.size() - 1;
   std::size_t merges_done = 0;
@@ -210,7 +247,7 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
     const auto level_start = std::chrono::steady_clock::now();
     auto merge = [&](std::int64_t k) {
       throw_if_cancelled(options.cancel);
-      BooleanResult merged = boolean(*level[2 * k], *level[2 * k + 1], BooleanOp::union_);
+      BooleanResult merged = union_merge(*level[2 * k], *level[2 * k + 1], checked);
       merge_stats[k] = merged.stats;
       next[k] = std::move(merged.mesh);
       level[2 * k].reset();
@@ -234,9 +271,8 @@ SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const Surf
   result.mesh = std::move(*level[0]);
   result.merges = total_merges;
   result.levels = height;
-  result.seconds.union_levels =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
 }
+
+}  // namespace
 
 }  // namespace molsurf
