@@ -8,9 +8,12 @@
 // coplanar faces, touching solids and coincident vertices).
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "molsurf/mesh.hpp"
+#include "molsurf/mesh_check.hpp"
 
 namespace molsurf {
 
@@ -60,5 +63,29 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op);
 BooleanResult union_outer_envelope(const Mesh& a, const Mesh& b);
 
 const char* boolean_op_name(BooleanOp op);
+
+// The Boolean as a front end runs it (`molsurf boolean`, Python's boolean()), every rule in
+// one place:
+//  - each operand must meet the engine's contract: a valid closed surface, not empty (an empty
+//    mesh is no closed surface, as `molsurf check` says); with `outer_envelope` (the union's
+//    outer envelope, §2.4) an open surface that is otherwise sound will do. Otherwise throws
+//    molsurf::Error "NAME: not a valid closed surface, so no Boolean is defined: DEFECTS",
+//    NAME being `name_a` or `name_b` (file names on the command line, a and b in Python);
+//  - the operation (union_outer_envelope with `outer_envelope`, which only a union has);
+//  - the result checked (`check`); problem() says what is wrong with it. An empty result
+//    has no problem: it is the value of, e.g., the intersection of disjoint solids.
+struct CheckedBoolean {
+  BooleanResult result;
+  MeshCheck check;          // of result.mesh
+  bool open_input = false;  // an operand was open (outer envelope only), so the result may be open
+  // Whether `c` (the result's check, or that of the result as a lossy file holds it) passes:
+  // a valid surface, or the open envelope an open operand gives.
+  bool acceptable(const MeshCheck& c) const;
+  // Empty when acceptable(c), else "the result failed its check: DEFECTS", with where the
+  // operands touch without overlapping when they do.
+  std::string problem(const MeshCheck& c) const;
+};
+CheckedBoolean checked_boolean(const Mesh& a, const Mesh& b, BooleanOp op, std::string_view name_a,
+                               std::string_view name_b, bool outer_envelope = false);
 
 }  // namespace molsurf

@@ -2,6 +2,7 @@
 
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/true_points.hpp"
+#include "molsurf/parameters.hpp"
 
 #include <omp.h>
 
@@ -206,6 +207,7 @@ void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& s
 
 ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
   const auto start = std::chrono::steady_clock::now();
+  validate(requested);
   // The van der Waals surface is the accessible one at probe 0.
   ComputeSurfaceOptions options = requested;
   if (options.surface == SurfaceKind::vdw) {
