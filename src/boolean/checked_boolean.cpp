@@ -41,8 +41,8 @@ std::string CheckedBoolean::problem(const MeshCheck& c) const {
     const Vec3 p = (1.0 / 3) * (result.mesh.vertices[t[0]] + result.mesh.vertices[t[1]] + result.mesh.vertices[t[2]]);
     char where[160];
     std::snprintf(where, sizeof where,
-                  " (A and B touch without overlapping near (%.6g, %.6g, %.6g): move one apart, or into the other)", p.x,
-                  p.y, p.z);
+                  " (A and B touch without overlapping near (%.6g, %.6g, %.6g): move one apart, or into the other)",
+                  p.x, p.y, p.z);
     why += where;
   }
   return "the result failed its check: " + why;

@@ -275,7 +275,8 @@ int SurfaceCommand::run_areas_only() const {
   const std::vector<std::filesystem::path> written_files = files.commit();
   if (!silent)
     print_summary(report, std::nullopt, {}, written_files,
-                  areas_only ? "nothing (--areas-only)" : "nothing (-o NAME_{model}.vtp writes each model's mesh)", text);
+                  areas_only ? "nothing (--areas-only)" : "nothing (-o NAME_{model}.vtp writes each model's mesh)",
+                  text);
   return 0;
 }
 

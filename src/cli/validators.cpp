@@ -8,16 +8,14 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "common/message_text.hpp"
+
 namespace molsurf::cli {
 
 namespace {
 
 // The value as typed, short and printable (it is echoed in the message).
-std::string shown(const std::string& value) {
-  std::string text;
-  for (char c : value.substr(0, 32)) text += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-  return "'" + text + (value.size() > 32 ? "...'" : "'");
-}
+std::string shown(const std::string& value) { return detail::quoted_text(value, 32); }
 
 std::string_view without_plus(std::string_view text) {
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);

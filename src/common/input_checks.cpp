@@ -5,19 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/message_text.hpp"
 #include "molsurf/error.hpp"
 
 namespace molsurf {
-
-namespace {
-
-std::string g(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-}  // namespace
 
 std::string array_entry_name(std::string_view name, std::size_t flat, std::span<const std::size_t> shape) {
   std::string index;
@@ -33,13 +24,14 @@ std::string array_entry_name(std::string_view name, std::size_t flat, std::span<
 
 std::string coordinate_problem(double value) {
   if (std::abs(value) < kMaxCoordinate) return {};
-  if (!std::isfinite(value)) return g(value) + " is not a finite number";
-  return g(value) + " is out of range (its magnitude must be below 1e16 angstrom)";
+  if (!std::isfinite(value)) return detail::number_text(value) + " is not a finite number";
+  return detail::number_text(value) + " is out of range (its magnitude must be below 1e16 angstrom)";
 }
 
 std::string radius_problem(double value) {
   if (std::string text = coordinate_problem(value); !text.empty()) return text;
-  if (value < 0) return g(value) + " is negative; a radius is 0 or more (angstrom, without the probe)";
+  if (value < 0)
+    return detail::number_text(value) + " is negative; a radius is 0 or more (angstrom, without the probe)";
   return {};
 }
 
@@ -50,11 +42,7 @@ std::string vertex_index_problem(long long index, std::size_t vertex_count, int 
 }
 
 std::string integer_text_problem(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string shown(text.substr(0, kMaxShown));
-  for (char& c : shown)
-    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
-  return "expected an integer, found '" + shown + (text.size() > kMaxShown ? "...'" : "'");
+  return "expected an integer, found " + detail::quoted_text(text, 40);
 }
 
 void check_coordinate_array(std::string_view name, std::span<const double> values,
@@ -67,7 +55,8 @@ void check_coordinate_array(std::string_view name, std::span<const double> value
 void check_radius_array(std::string_view name, std::span<const double> radii) {
   const std::size_t shape[] = {radii.size()};
   for (std::size_t i = 0; i < radii.size(); ++i)
-    if (std::string text = radius_problem(radii[i]); !text.empty()) throw Error(array_entry_name(name, i, shape) + ": " + text);
+    if (std::string text = radius_problem(radii[i]); !text.empty())
+      throw Error(array_entry_name(name, i, shape) + ": " + text);
 }
 
 void check_face_array(std::string_view name, std::span<const std::int64_t> indices, std::size_t vertex_count) {

@@ -1,18 +1,14 @@
 #include "molsurf/parameters.hpp"
 
-#include <cctype>
 #include <cmath>
-#include <cstdio>
+
+#include "common/message_text.hpp"
 
 namespace molsurf {
 
-namespace {
+using detail::number_text;
 
-std::string g(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
+namespace {
 
 template <class Enum, std::size_t N>
 Enum from_name(std::string_view name, const std::string_view (&names)[N], const char* parameter) {
@@ -27,7 +23,7 @@ ParameterError::ParameterError(std::string parameter, std::string problem)
     : Error(parameter + ": " + problem), parameter_(std::move(parameter)), problem_(std::move(problem)) {}
 
 std::string range_text(const NumberParameter& parameter) {
-  return (parameter.low_open ? "(" : "[") + g(parameter.low) + ", " + g(parameter.high) + "]";
+  return (parameter.low_open ? "(" : "[") + number_text(parameter.low) + ", " + number_text(parameter.high) + "]";
 }
 
 std::string range_text(const WholeParameter& parameter) {
@@ -35,9 +31,10 @@ std::string range_text(const WholeParameter& parameter) {
 }
 
 std::string problem(const NumberParameter& parameter, double value) {
-  if (!std::isfinite(value)) return g(value) + " is not a finite number; expected one in " + range_text(parameter);
+  if (!std::isfinite(value))
+    return number_text(value) + " is not a finite number; expected one in " + range_text(parameter);
   if (value < parameter.low || (parameter.low_open && value == parameter.low) || value > parameter.high)
-    return g(value) + " is out of range; expected a number in " + range_text(parameter);
+    return number_text(value) + " is out of range; expected a number in " + range_text(parameter);
   return {};
 }
 
@@ -48,11 +45,13 @@ std::string problem(const WholeParameter& parameter, long long value) {
 }
 
 void check(const NumberParameter& parameter, double value) {
-  if (std::string text = problem(parameter, value); !text.empty()) throw ParameterError(parameter.name, std::move(text));
+  if (std::string text = problem(parameter, value); !text.empty())
+    throw ParameterError(parameter.name, std::move(text));
 }
 
 void check(const WholeParameter& parameter, long long value) {
-  if (std::string text = problem(parameter, value); !text.empty()) throw ParameterError(parameter.name, std::move(text));
+  if (std::string text = problem(parameter, value); !text.empty())
+    throw ParameterError(parameter.name, std::move(text));
 }
 
 std::string choice_problem(std::string_view value, std::span<const std::string_view> names) {
@@ -61,10 +60,7 @@ std::string choice_problem(std::string_view value, std::span<const std::string_v
     if (value == name) return {};
     list += (list.empty() ? "" : ", ") + std::string(name);
   }
-  // The value is echoed: short, and printable whatever was typed.
-  std::string shown;
-  for (const char c : value.substr(0, 32)) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-  return "'" + shown + (value.size() > 32 ? "...'" : "'") + " is not one of: " + list;
+  return detail::quoted_text(value, 32) + " is not one of: " + list;
 }
 
 // The enums list their values in the order of the name tables above.

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "common/message_text.hpp"
 #include "mesh/polygon_triangulation.hpp"
 #include "io/coordinate_range.hpp"
 #include "io/mesh_formats.hpp"
@@ -115,13 +116,7 @@ void append_number(std::string& out, float value) {
 
 namespace {
 
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string shown(text.substr(0, kMaxShown));
-  for (char& c : shown)
-    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
-  return "'" + shown + (text.size() > kMaxShown ? "...'" : "'");
-}
+std::string quoted(std::string_view text) { return detail::quoted_text(text, 40); }
 
 }  // namespace
 
