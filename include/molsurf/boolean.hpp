@@ -18,6 +18,7 @@
 namespace molsurf {
 
 enum class BooleanOp { union_, intersection, difference };
+inline constexpr std::string_view kBooleanOpNames[] = {"union", "intersection", "difference"};  // in the enum's order
 
 struct BooleanTimings {  // seconds per step of the paper
   double cull = 0, intersect = 0, split = 0, classify = 0, stitch = 0;

@@ -66,10 +66,8 @@ std::string problem(const WholeParameter& parameter, long long value);
 void check(const NumberParameter& parameter, double value);
 void check(const WholeParameter& parameter, long long value);
 
-// The names a parameter with a fixed set of values takes, in the order messages list them.
-inline constexpr std::string_view kSurfaceKindNames[] = {"sas", "ses", "vdw"};
-inline constexpr std::string_view kSurfaceMethodNames[] = {"one-pass", "pairwise"};
-inline constexpr std::string_view kBooleanOpNames[] = {"union", "intersection", "difference"};
+// The names a parameter with a fixed set of values takes are beside its enum
+// (kSurfaceKindNames, kSurfaceMethodNames, kBooleanOpNames), in the order messages list them.
 // "'xor' is not one of: union, intersection, difference", or empty when `value` is one.
 std::string choice_problem(std::string_view value, std::span<const std::string_view> names);
 

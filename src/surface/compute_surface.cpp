@@ -147,12 +147,8 @@ class Pipeline {
 }  // namespace
 
 const char* surface_kind_name(SurfaceKind kind) {
-  switch (kind) {
-    case SurfaceKind::sas: return "sas";
-    case SurfaceKind::ses: return "ses";
-    case SurfaceKind::vdw: return "vdw";
-  }
-  return "?";
+  const auto index = static_cast<std::size_t>(kind);
+  return index < std::size(kSurfaceKindNames) ? kSurfaceKindNames[index].data() : "?";
 }
 
 const char* surface_stage_name(SurfaceStage stage) {

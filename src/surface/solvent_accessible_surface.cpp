@@ -124,7 +124,8 @@ class MergeTree {
 }  // namespace
 
 const char* surface_method_name(SurfaceMethod method) {
-  return method == SurfaceMethod::one_pass ? "one-pass" : "pairwise";
+  const auto index = static_cast<std::size_t>(method);
+  return index < std::size(kSurfaceMethodNames) ? kSurfaceMethodNames[index].data() : "?";
 }
 
 SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
