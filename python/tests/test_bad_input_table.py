@@ -60,6 +60,7 @@ def test_the_table_has_every_kind_of_row():
 
 @pytest.mark.parametrize("row", ROWS, ids=[row["input"] for row in ROWS])
 def test_command_and_python_agree(row, cli, tmp_path, monkeypatch):
+    cli = cli.resolve()  # a relative MOLSURF_CLI, before the folder changes
     folder = tmp_path / "inputs"
     shutil.copytree(TABLE_DIR, folder)
     monkeypatch.chdir(folder)
