@@ -1,6 +1,6 @@
 // How `molsurf check` (read_mesh, then check_mesh) scales on the hostile shapes of issue
 // 34: long thin pencils (an n-gon prism whose caps are n-gon faces), disjoint copies of a
-// tetrahedron (in a row, and nested one inside the other), and a prism with one huge
+// tetrahedron (in a row, nested one inside the other, and piled at one place), and a prism with one huge
 // polygon cap, each written as an OFF file with polygon faces and read back as a user's
 // file would be. Prints one table; a near-linear check keeps "µs per face" flat down
 // each family.
@@ -73,14 +73,18 @@ Off prism(int n, double radius, double length, bool fanned = false) {
   return off;
 }
 
-// `count` regular tetrahedra: in a row, 3 apart (disjoint boxes), or nested around one
+enum class Copies { in_a_row, nested, coincident };
+
+// `count` regular tetrahedra: in a row, 3 apart (disjoint boxes); nested around one
 // centre, each 1 % of the first's size beyond the previous (disjoint surfaces, every face's
-// box holding the smaller copies; every other one a cavity, facing inward).
-Off tetrahedra(int count, bool nested) {
+// box holding the smaller copies; every other one a cavity, facing inward); or all at one
+// place (invalid: quadratically many overlapping and touching face pairs).
+Off tetrahedra(int count, Copies copies) {
+  const bool nested = copies == Copies::nested;
   Off off;
   const double corners[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
   for (int c = 0; c < count; ++c) {
-    const double scale = nested ? 1 + 0.01 * c : 1.0, shift = nested ? 0.0 : 3.0 * c;
+    const double scale = nested ? 1 + 0.01 * c : 1.0, shift = copies == Copies::in_a_row ? 3.0 * c : 0.0;
     const bool inward = nested && (count - 1 - c) % 2 == 1;
     const std::size_t first = off.vertex_count;
     for (const auto& p : corners) off.vertex(scale * p[0] + shift, scale * p[1], scale * p[2]);
@@ -123,8 +127,12 @@ int main(int argc, char** argv) {
     row("pencil (n-gon prism, radius 0.5, length 200)", "n = " + std::to_string(n), prism(n, 0.5, 200));
   for (const int n : {250, 1000, 4000})
     row("pencil, caps fanned in the file", "n = " + std::to_string(n), prism(n, 0.5, 200, true));
-  for (const int count : {250, 1000, 4000}) row("tetrahedra in a row", std::to_string(count), tetrahedra(count, false));
-  for (const int count : {250, 1000, 2000}) row("nested tetrahedra", std::to_string(count), tetrahedra(count, true));
+  for (const int count : {250, 1000, 4000})
+    row("tetrahedra in a row", std::to_string(count), tetrahedra(count, Copies::in_a_row));
+  for (const int count : {250, 1000, 2000})
+    row("nested tetrahedra", std::to_string(count), tetrahedra(count, Copies::nested));
+  for (const int count : {250, 1000, 4000})
+    row("coincident tetrahedra (a pile)", std::to_string(count), tetrahedra(count, Copies::coincident));
   const std::vector<int> caps = quick ? std::vector<int>{1000, 10000} : std::vector<int>{1000, 10000, 100000};
   for (const int n : caps)
     row("prism with an n-gon cap (radius 10, length 1)", "n = " + std::to_string(n), prism(n, 10, 1));

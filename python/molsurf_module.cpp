@@ -39,12 +39,15 @@
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/gemmi_structure.hpp"
+#include "molsurf/input_checks.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/output_files.hpp"
+#include "molsurf/parameters.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
+#include "molsurf/surface_files.hpp"
 #include "molsurf/surface_report.hpp"
 #include "molsurf/threads.hpp"
 #include "molsurf/written_check.hpp"
@@ -172,6 +175,18 @@ py::array_t<T, py::array::c_style | py::array::forcecast> as_array(py::handle va
   }
   const char kind = plain.dtype().kind();
   const bool integers = std::is_integral_v<T>;
+  if (integers && kind == 'f' && plain.size() > 0) {
+    // As a file's reader refuses '1.5' where an index belongs: the first entry that is not
+    // whole (or the first entry: a float is no index even when it is whole), in its words.
+    const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(plain);
+    const double* data = values.data();
+    const std::size_t count = static_cast<std::size_t>(values.size());
+    const std::size_t bad = std::find_if(data, data + count, [](double x) { return x != std::trunc(x); }) - data;
+    const std::size_t entry = bad < count ? bad : 0;
+    const std::vector<std::size_t> shape(values.shape(), values.shape() + values.ndim());
+    throw Error(molsurf::array_entry_name(name, entry, shape) + ": " +
+                molsurf::integer_text_problem(py::repr(py::float_(data[entry])).cast<std::string>()));
+  }
   if (integers ? kind != 'i' && kind != 'u' : kind != 'i' && kind != 'u' && kind != 'f')
     throw Error(std::string(name) + ": not convertible to a numeric array: its elements are " +
                 py::str(plain.dtype()).cast<std::string>() +
@@ -190,18 +205,17 @@ molsurf::Mesh mesh_from_arrays(py::handle vertices, py::handle faces, py::handle
   if (f.ndim() != 2 || f.shape(1) != 3) throw Error("faces: expected an array of shape (F, 3), got " + shape_text(f));
   molsurf::Mesh mesh;
   const auto vertex_count = static_cast<std::size_t>(v.shape(0));
+  const auto face_count = static_cast<std::size_t>(f.shape(0));
+  // What a mesh file's reader refuses, refused in its words.
+  const std::size_t vertex_shape[] = {vertex_count, 3};
+  molsurf::check_coordinate_array("vertices", std::span(v.data(), 3 * vertex_count), vertex_shape);
+  molsurf::check_face_array("faces", std::span(f.data(), 3 * face_count), vertex_count);
   mesh.vertices.resize(vertex_count);
   const double* xyz = v.data();
   for (std::size_t i = 0; i < vertex_count; ++i) mesh.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-  const auto face_count = static_cast<std::size_t>(f.shape(0));
   mesh.faces.resize(face_count);
   const std::int64_t* index = f.data();
-  for (std::size_t i = 0; i < 3 * face_count; ++i) {
-    if (index[i] < 0 || static_cast<std::uint64_t>(index[i]) >= vertex_count)
-      throw Error("faces: face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(index[i]) +
-                  ", but there are " + std::to_string(vertex_count) + " vertices");
-    mesh.faces[i / 3][i % 3] = static_cast<molsurf::Index>(index[i]);
-  }
+  for (std::size_t i = 0; i < 3 * face_count; ++i) mesh.faces[i / 3][i % 3] = static_cast<molsurf::Index>(index[i]);
   if (!tags.is_none()) {
     // Read as 64 bits, so that a tag beyond 32 bits is refused rather than wrapped.
     const auto t = as_array<std::int64_t>(tags, "tags");
@@ -234,25 +248,14 @@ molsurf::ReadOptions read_options(std::optional<int> model, py::object chains, b
                                   std::optional<std::filesystem::path> radius_file) {
   molsurf::ReadOptions options;
   options.model = model;
-  if (py::isinstance<py::str>(chains)) {
-    // "A,C" as on the command line.
-    const std::string list = chains.cast<std::string>();
-    std::size_t start = 0;
-    while (start <= list.size()) {
-      const std::size_t end = std::min(list.find(',', start), list.size());
-      if (end > start) options.chains.push_back(list.substr(start, end - start));
-      start = end + 1;
-    }
-  } else if (!chains.is_none()) {
-    options.chains = chains.cast<std::vector<std::string>>();
-  }
+  if (py::isinstance<py::str>(chains)) options.chains = molsurf::chain_list(chains.cast<std::string>());  // "A,C"
+  else if (!chains.is_none()) options.chains = chains.cast<std::vector<std::string>>();
   options.keep_water = keep_water;
   options.keep_hydrogens = hydrogens;
   options.keep_hetatm = hetatm;
-  if (!molsurf::RadiusTable::is_builtin(radius_set))
-    throw Error("radius_set: '" + radius_set + "' is not a built-in radius set (protor, bondi or naccess)");
   options.radius_set = radius_set;
   if (radius_file) options.radius_file = *radius_file;
+  molsurf::validate(options);  // before anything is read
   return options;
 }
 
@@ -297,16 +300,6 @@ PyStructure read_structure_py(py::object source, std::optional<int> model, py::o
                                           std::move(radius_file)))};
 }
 
-molsurf::SurfaceMethod surface_method(const std::string& name) {
-  if (name == "one-pass" || name == "one_pass") return molsurf::SurfaceMethod::one_pass;
-  if (name == "pairwise") return molsurf::SurfaceMethod::pairwise;
-  throw Error("method: '" + name + "' is not a surface method (one-pass or pairwise)");
-}
-
-// The bound the structure readers put on coordinates and radii (src/io/coordinate_range.hpp):
-// beyond it doubles no longer resolve an angstrom.
-constexpr double kMaxCoordinate = 1e16;
-
 std::shared_ptr<const molsurf::Structure> atoms_from_arrays(py::handle centres, py::handle radii) {
   const auto c = as_array<double>(centres, "centres");
   const auto r = as_array<double>(radii, "radii");
@@ -316,19 +309,16 @@ std::shared_ptr<const molsurf::Structure> atoms_from_arrays(py::handle centres, 
     throw Error("radii: expected one per centre, shape (" + std::to_string(c.shape(0)) + ",), got " + shape_text(r));
   auto structure = std::make_shared<molsurf::Structure>();
   const auto n = static_cast<std::size_t>(c.shape(0));
+  // What a structure file's reader refuses, refused in its words.
+  const std::size_t shape[] = {n, 3};
+  molsurf::check_coordinate_array("centres", std::span(c.data(), 3 * n), shape);
+  molsurf::check_radius_array("radii", std::span(r.data(), n));
   structure->atoms.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     molsurf::Atom& atom = structure->atoms[i];
     atom.centre = {c.data()[3 * i], c.data()[3 * i + 1], c.data()[3 * i + 2]};
     atom.radius = r.data()[i];
     atom.serial = static_cast<int>(i + 1);
-    for (const double x : {atom.centre.x, atom.centre.y, atom.centre.z})
-      if (!(std::abs(x) < kMaxCoordinate))  // NaN fails too
-        throw Error("centres: centres[" + std::to_string(i) + "] has a coordinate " +
-                    py::repr(py::float_(x)).cast<std::string>() + "; each must be a finite number below 1e16 in magnitude");
-    if (!(atom.radius >= 0 && atom.radius < kMaxCoordinate))
-      throw Error("radii: radii[" + std::to_string(i) + "] is " + py::repr(py::float_(atom.radius)).cast<std::string>() +
-                  "; each must be a finite number >= 0 (A, without the probe)");
   }
   structure->report.file = "atoms";
   structure->report.format = molsurf::StructureFormat::xyzr;  // spheres as given
@@ -353,22 +343,14 @@ std::shared_ptr<const molsurf::Structure> atoms_argument(py::object structure, p
   return read_atoms(structure, options());
 }
 
-// The command's bounds (--probe, --threads); the thread count capped, with a warning, at
-// what this process can start (startable_threads, as the command does).
-int checked_probe_and_threads(double probe, int threads) {
-  if (!(probe >= 0 && probe <= 1e15)) throw Error("probe: must be a finite number from 0 to 1e15 (angstrom)");
-  if (threads < 0 || threads > 1024) throw Error("threads: must be 0 (all cores) to 1024");
+// The thread count in the library's range, capped, with a warning, at what this process can
+// start (startable_threads, as the command does).
+int startable(int threads) {
+  molsurf::check(molsurf::kThreadsParameter, threads);
   const molsurf::ThreadCount count = molsurf::startable_threads(threads);
   if (!count.note.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, ("threads: " + count.note).c_str(), 1) != 0)
     throw py::error_already_set();
   return count.threads;
-}
-
-molsurf::SurfaceKind surface_kind(const std::string& name) {
-  if (name == "sas") return molsurf::SurfaceKind::sas;
-  if (name == "ses") return molsurf::SurfaceKind::ses;
-  if (name == "vdw") return molsurf::SurfaceKind::vdw;
-  throw Error("surface: must be 'sas', 'ses' or 'vdw', not '" + name + "'");
 }
 
 // Runs `work` (given a cancel flag) on a worker thread while this thread, which holds the
@@ -434,50 +416,47 @@ struct ProgressState {
 };
 
 PySurface surface_py(py::object structure, py::object centres, py::object radii, const std::string& surface,
-                     double probe, double density,
-                     std::optional<int> frequency, const std::string& method, bool cleanup, bool outer_only,
-                     bool area_corrected, bool check, int threads, std::uint64_t max_faces, std::optional<int> model,
+                     std::optional<double> probe, double density, std::optional<int> frequency,
+                     const std::string& method, bool cleanup, bool outer_only, bool area_corrected, bool check,
+                     int threads, long long max_faces, std::optional<double> max_memory, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
                      std::optional<std::filesystem::path> radius_file, py::object progress) {
-  threads = checked_probe_and_threads(probe, threads);
-  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
-    throw Error("progress: must be callable as progress(stage, done, total), or None");
-  if (!std::isfinite(density) || density <= 0) throw Error("density: must be a finite number > 0 (vertices/A^2)");
-  if (frequency && (*frequency < 1 || *frequency > 200)) throw Error("frequency: must be 1 to 200");
-
+  // Every parameter judged by the library (parameters.hpp), as the command's options are.
   molsurf::ComputeSurfaceOptions options;
-  options.surface = surface_kind(surface);
-  // As --surface vdw: the surface at probe 0; a probe other than 0 or the default is refused.
-  if (options.surface == molsurf::SurfaceKind::vdw) {
-    if (probe != 0 && probe != 1.4) throw Error("surface='vdw' is the surface at probe 0: drop probe");
-    probe = 0;
-  }
-  if (options.surface == molsurf::SurfaceKind::ses && probe == 0)
-    throw Error("surface='ses' needs a probe radius above 0 (at 0 it is the van der Waals surface: surface='vdw')");
-  if (options.surface == molsurf::SurfaceKind::ses && method != "one-pass")
-    throw Error("method: applies to the SAS and vdW surfaces only");
-  options.spheres.probe = probe;
+  options.surface = molsurf::surface_kind_from_name(surface);
+  options.spheres.probe = molsurf::surface_probe(options.surface, probe);
   options.spheres.density = density;
+  if (frequency) molsurf::check(molsurf::kFrequencyParameter, *frequency);
   options.spheres.frequency = frequency.value_or(0);
   options.spheres.area_corrected = area_corrected;
-  options.method = surface_method(method);
+  options.method = molsurf::surface_method_from_name(method);
   options.threads = threads;
   options.outer_only = outer_only;
   options.cleanup = cleanup;
   options.check_self_intersections = check;
-  options.max_sphere_faces = max_faces;
+  molsurf::check(molsurf::kMaxFacesParameter, max_faces);
+  options.max_sphere_faces = static_cast<std::uint64_t>(max_faces);
+  if (max_memory) options.max_memory = molsurf::memory_limit_bytes(*max_memory);
+  molsurf::validate(options);
+  options.threads = startable(threads);
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw Error("progress: must be callable as progress(stage, done, total), or None");
 
   // Arrays too large for the limits are refused from their radii alone, before any atom
   // is built (ten million atoms took 4 GB and most of a minute to be refused after).
   if (structure.is_none() && !centres.is_none() && !radii.is_none()) {
     const auto r = as_array<double>(radii, "radii");
-    if (r.ndim() == 1 && std::all_of(r.data(), r.data() + r.size(), [](double x) { return x >= 0 && x < 1e16; }))
+    if (r.ndim() == 1 &&
+        std::all_of(r.data(), r.data() + r.size(), [](double x) { return molsurf::radius_problem(x).empty(); }))
       molsurf::check_sphere_faces("atoms", molsurf::estimate_resources(std::span(r.data(), r.size()), options.spheres),
-                                  options.spheres, max_faces);
+                                  options.spheres, options.max_sphere_faces);
   }
   auto data = std::make_shared<SurfaceData>();
   data->structure = atoms_argument(structure, centres, radii, [&] {
-    return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
+    molsurf::ReadOptions read =
+        read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
+    read.max_memory = options.max_memory;
+    return read;
   });
   options.source = data->structure->report.file;
   data->spheres = options.spheres;
@@ -523,7 +502,8 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
 PyAreas areas_single(py::object structure, py::object centres, py::object radii, double probe, bool outer_only,
                  int threads, std::optional<int> model, py::object chains, bool keep_water, bool hydrogens,
                  bool hetatm, const std::string& radius_set, std::optional<std::filesystem::path> radius_file) {
-  threads = checked_probe_and_threads(probe, threads);
+  molsurf::check(molsurf::kProbeParameter, probe);
+  threads = startable(threads);
   auto data = std::make_shared<AreasData>();
   data->structure = atoms_argument(structure, centres, radii, [&] {
     return read_options(model, chains, keep_water, hydrogens, hetatm, radius_set, std::move(radius_file));
@@ -563,19 +543,10 @@ PyTrajectoryAreas trajectory_areas(py::handle coords, py::handle radii, double p
   data->probe = probe;
   data->outer_only = outer_only;
   data->radii.assign(r.data(), r.data() + data->atoms);
-  for (std::size_t i = 0; i < data->atoms; ++i)
-    if (!(data->radii[i] >= 0 && data->radii[i] < kMaxCoordinate))
-      throw Error("radii: radii[" + std::to_string(i) + "] is " + py::repr(py::float_(data->radii[i])).cast<std::string>() +
-                  "; each must be a finite number >= 0 (A, without the probe)");
+  molsurf::check_radius_array("radii", data->radii);
   const double* xyz = c.data();
-  const std::size_t values = 3 * data->frames * data->atoms;
-  for (std::size_t k = 0; k < values; ++k)
-    if (!(std::abs(xyz[k]) < kMaxCoordinate)) {  // NaN fails too
-      const std::size_t frame = k / (3 * data->atoms), atom = k / 3 % data->atoms;
-      throw Error("coords: coords[" + std::to_string(frame) + ", " + std::to_string(atom) + "] has a coordinate " +
-                  py::repr(py::float_(xyz[k])).cast<std::string>() +
-                  "; each must be a finite number below 1e16 in magnitude");
-    }
+  const std::size_t shape[] = {data->frames, data->atoms, 3};
+  molsurf::check_coordinate_array("coords", std::span(xyz, 3 * data->frames * data->atoms), shape);
   const int max_threads = threads > 0 ? threads : omp_get_max_threads();
   data->threads = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(max_threads, data->frames)));
   data->area_per_atom.assign(data->frames * data->atoms, 0.0);
@@ -634,7 +605,8 @@ py::object areas_py(py::object structure, py::object centres, py::object coords,
       throw Error(std::string(name) + ": expected an array of shape (N, 3) or (frames, atoms, 3), got " +
                   shape_text(c));
     if (c.ndim() == 3) {
-      threads = checked_probe_and_threads(probe, threads);
+      molsurf::check(molsurf::kProbeParameter, probe);
+      threads = startable(threads);
       return py::cast(trajectory_areas(c, radii, probe, outer_only, threads));
     }
     coords = c;
@@ -708,34 +680,18 @@ py::object residue_table(const molsurf::Structure& s, const std::vector<double>&
   return py::module_::import("numpy").attr("array")(records, "dtype"_a = dtype);
 }
 
+// The library's write of a surface's file (surface_files.hpp), as the command writes it.
 std::vector<std::filesystem::path> write_surface(const SurfaceData& d, const std::filesystem::path& path, bool ascii,
                                                  int msms_decimals, bool msms_header) {
-  const std::vector<std::filesystem::path> inputs;
-  const std::vector<molsurf::OutputRequest> outputs{{path, "path", true}};
-  molsurf::check_output_paths(inputs, outputs);
-  molsurf::MeshWriteOptions options;
-  options.atoms = d.structure->atoms;
-  options.ascii = ascii;
-  options.msms_decimals = msms_decimals;
-  options.msms_header = msms_header;
-  options.probe_radius = d.spheres.probe;
-  options.density = d.spheres.density;
-  options.faces_on_atom_spheres = d.kind != molsurf::SurfaceKind::ses;
-  molsurf::MeshCheckOptions check_options;
-  check_options.self_intersections = d.computed.check.self_intersections_checked;
-  // Lossy formats (.vert, .stl): the surface is checked as the file will hold it, as the
-  // command line does.
-  const molsurf::WrittenCheck written =
-      molsurf::check_as_written(path, d.computed.mesh, d.computed.check, options, check_options,
-                                [](const molsurf::MeshCheck& c) { return c.valid(); });
-  molsurf::OutputFiles files;
-  files.add_mesh(path, d.computed.mesh, written.options);
-  std::vector<std::filesystem::path> paths = files.commit();
+  const molsurf::SurfaceFileOptions file{.ascii = ascii, .msms_header = msms_header, .msms_decimals = msms_decimals};
+  const molsurf::WrittenSurface written = molsurf::write_surface(
+      path, d.computed,
+      molsurf::surface_write_options(d.kind, d.spheres, d.structure->atoms, d.structure->report.file, file));
   if (!written.note.empty()) {
     py::gil_scoped_acquire acquire;
     py::module_::import("warnings").attr("warn")(written.note);
   }
-  return paths;
+  return written.files;
 }
 
 py::dict cleanup_dict(const molsurf::CleanupStats& c) {
@@ -1024,43 +980,28 @@ PYBIND11_MODULE(molsurf, m) {
   m.def(
       "boolean",
       [](const std::string& op, py::object a, py::object b) {
-        const molsurf::BooleanOp operation = op == "union"          ? molsurf::BooleanOp::union_
-                                             : op == "intersection" ? molsurf::BooleanOp::intersection
-                                             : op == "difference"
-                                                 ? molsurf::BooleanOp::difference
-                                                 : throw Error("op: '" + op +
-                                                               "' is not union, intersection or difference");
+        const molsurf::BooleanOp operation = molsurf::boolean_op_from_name(op);
         const auto mesh_a = mesh_argument(a, "a");
         const auto mesh_b = mesh_argument(b, "b");
         py::gil_scoped_release release;
-        // The engine's contract, as `molsurf boolean` enforces it: valid closed operands.
-        for (const auto& [mesh, name] : {std::pair{mesh_a.get(), "a"}, std::pair{mesh_b.get(), "b"}}) {
-          const molsurf::MeshCheck check = molsurf::check_mesh(*mesh);
-          if (check.valid() && !check.empty()) continue;
-          std::string why = check.empty() ? "\n  - no faces" : "";
-          for (const std::string& defect : check.defects()) why += "\n  - " + defect;
-          throw Error(std::string(name) + ": not a valid closed surface, so no Boolean is defined:" + why);
-        }
-        molsurf::BooleanResult r = molsurf::checked_boolean(*mesh_a, *mesh_b, operation);
-        if (!r.check.valid()) {
-          std::string why;
-          for (const std::string& defect : r.check.defects()) why += "\n  - " + defect;
-          throw Error("the " + op + " failed its check:" + why);
-        }
-        if (const std::string note = molsurf::boolean_note(r.stats); !note.empty()) {
+        // The operands held to the engine's contract and the result checked, as `molsurf boolean` does.
+        molsurf::CheckedBoolean r = molsurf::checked_boolean(*mesh_a, *mesh_b, operation, "a", "b");
+        if (std::string problem = r.problem(r.check); !problem.empty()) throw Error(problem);
+        if (const std::string note = molsurf::boolean_note(r.result.stats); !note.empty()) {
           py::gil_scoped_acquire acquire;
           if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
         }
-        return PyMesh{std::make_shared<const molsurf::Mesh>(std::move(r.mesh))};
+        return PyMesh{std::make_shared<const molsurf::Mesh>(std::move(r.result.mesh))};
       },
       "op"_a, "a"_a, "b"_a,
       "boolean(op, a, b) -> Mesh\n\n"
       "The exact union, intersection or difference (a minus b) of two closed meshes, each a Mesh or a\n"
-      "(vertices, faces) pair of arrays. Both must be valid closed surfaces (molsurf.check); the result\n"
-      "is one too (possibly empty): it is checked, and an error is raised if it fails. Where the operands\n"
-      "touch, or their sheets lie closer than rounding to doubles keeps apart, b is moved by a tiny step\n"
-      "(2^-36 of the coordinates' scale first) and a UserWarning says so. Face tags of the result are\n"
-      "those of the source faces.");
+      "(vertices, faces) pair of arrays. Both must be valid closed surfaces, not empty (molsurf.check);\n"
+      "the result is one too, or empty (disjoint operands' intersection). Where the operands touch, or\n"
+      "their sheets lie closer than rounding to doubles keeps apart, b is moved by a tiny step (2^-36 of\n"
+      "the coordinates' scale first) and a UserWarning says so; a result that still fails its check\n"
+      "raises molsurf.Error, as `molsurf boolean` refuses it. Face tags of the result are those of the\n"
+      "source faces.");
 
   // ---- Shells of the true spheres ----
   py::class_<molsurf::ShellReport>(m, "Shell",
@@ -1241,8 +1182,10 @@ PYBIND11_MODULE(molsurf, m) {
           },
           "path"_a, py::kw_only(), "ascii"_a = false, "msms_decimals"_a = 3, "msms_header"_a = true,
           "write(path, *, ascii=False, msms_decimals=3, msms_header=True) -> list of paths\n\n"
-          "Writes the surface as the command line does; the format follows the extension: .vtp .vtk .ply .off\n"
-          ".stl .obj .vert (MSMS .vert/.face pair) .msh (gmsh 2.2). Cell data carry each face's atom.\n"
+          "Writes the surface as the command line does (the same bytes as `molsurf -o path`); the format\n"
+          "follows the extension: .vtp .vtk .ply .off .stl .obj .vert (MSMS .vert/.face pair) .msh (gmsh\n"
+          "2.2). Cell data carry each face's atom. msms_header=False: numeric rows only, without the header\n"
+          "lines and the atom-name column (the command's --no-header, for numpy.loadtxt readers).\n"
           "Lossy formats are checked as they will be held: MSMS decimals are raised (with a warning) where\n"
           "3 would break the surface; an STL that float32 would break raises molsurf.Error. Atomic; returns\n"
           "the files written (list of pathlib.Path).")
@@ -1254,15 +1197,17 @@ PYBIND11_MODULE(molsurf, m) {
       });
 
   m.def("surface", &surface_py, "structure"_a = py::none(), py::kw_only(), "centres"_a = py::none(),
-        "radii"_a = py::none(), "surface"_a = "sas", "probe"_a = 1.4, "density"_a = 2.0, "frequency"_a = py::none(),
-        "method"_a = "one-pass", "cleanup"_a = true, "outer_only"_a = false, "area_corrected"_a = true,
-        "check"_a = true, "threads"_a = 0, "max_faces"_a = molsurf::kDefaultMaxSphereFaces, "model"_a = py::none(),
+        "radii"_a = py::none(), "surface"_a = "sas", "probe"_a = py::none(), "density"_a = 2.0,
+        "frequency"_a = py::none(), "method"_a = "one-pass", "cleanup"_a = true, "outer_only"_a = false,
+        "area_corrected"_a = true, "check"_a = true, "threads"_a = 0,
+        "max_faces"_a = static_cast<long long>(molsurf::kDefaultMaxSphereFaces), "max_memory"_a = py::none(),
+        "model"_a = py::none(),
         "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
         "radius_set"_a = "protor", "radius_file"_a = py::none(), "progress"_a = py::none(),
-        "surface(structure=None, *, centres=None, radii=None, surface='sas', probe=1.4, density=2.0,\n"
+        "surface(structure=None, *, centres=None, radii=None, surface='sas', probe=None, density=2.0,\n"
         "        frequency=None,\n"
         "        method='one-pass', cleanup=True, outer_only=False, area_corrected=True, check=True,\n"
-        "        threads=0, max_faces=300000000, model=None, chains=None, keep_water=False,\n"
+        "        threads=0, max_faces=300000000, max_memory=None, model=None, chains=None, keep_water=False,\n"
         "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None, progress=None) -> Surface\n\n"
         "The surface of a structure, exactly as the molsurf command computes it (same defaults). The\n"
         "structure is a path (str or os.PathLike; read with the selection keywords, as read_structure),\n"
@@ -1270,17 +1215,19 @@ PYBIND11_MODULE(molsurf, m) {
         "centres ((N, 3), A) and radii ((N,), A) instead.\n"
         "  surface: 'sas' (solvent accessible, default), 'ses' (solvent excluded: where the rolling probe\n"
         "    touches the atoms; area and volume are then the facets') or 'vdw' (probe 0);\n"
-        "  probe: probe radius added to every atom, A (0: van der Waals surface);\n"
+        "  probe: probe radius added to every atom, A (None: 1.4, and 0 for 'vdw', the surface at probe 0;\n"
+        "    another probe with 'vdw' is refused, as the command refuses --surface vdw --probe 1.4);\n"
         "  density: icosphere vertices per A^2 of sphere; frequency: fixed icosphere frequency instead;\n"
         "  method: 'one-pass' (default) or 'pairwise' (the reference); cleanup: remove slivers;\n"
         "  outer_only: drop cavities; area_corrected: scale each icosphere to the sphere's area\n"
         "  (False: inscribed); check: run the exact self-intersection test (closedness always is);\n"
         "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs;\n"
+        "  max_memory: the memory limit in GB (None: this machine's), as --max-memory;\n"
         "  progress: a callable, progress(stage, done, total), called on the calling thread as the job\n"
         "    goes (stage 'union', 'cleanup', 'check' or 'measures'; at most 20 times a second); an\n"
         "    exception it raises stops the job and is raised by surface().\n"
         "The GIL is released while it runs; Ctrl-C (KeyboardInterrupt) stops it within a moment.\n"
-        "Raises molsurf.Error for bad input.\n"
+        "Raises molsurf.Error for bad input, with the command's message (docs/api.md).\n"
         "area, volume, area_per_atom, area_per_residue and shells are the true spheres' (exact, as the\n"
         "command's report and CSV tables); facet_area, facet_volume, facet_area_per_atom and components\n"
         "are the mesh's.");

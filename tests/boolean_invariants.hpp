@@ -32,7 +32,7 @@ inline ::testing::AssertionResult valid_or_only_touching(const Mesh& m) {
 }
 
 // Union, intersection and difference are valid (or only touching, where the solids only
-// touch; checked_boolean's result is then valid), and vol(A u B) + vol(A n B) = vol(A) + vol(B), vol(A - B) = vol(A) - vol(A n B),
+// touch; valid_boolean's result is then valid), and vol(A u B) + vol(A n B) = vol(A) + vol(B), vol(A - B) = vol(A) - vol(A n B),
 // to 1e-9 relative.
 inline void expect_boolean_invariants(const Mesh& a, const Mesh& b, const std::string& what) {
   double volume[3] = {0, 0, 0};
@@ -44,7 +44,7 @@ inline void expect_boolean_invariants(const Mesh& a, const Mesh& b, const std::s
       volume[k] = signed_volume(r.mesh);
       // What the front ends write: valid, with b moved where no rounding of this is.
       if (!check_mesh(r.mesh).valid()) {
-        const BooleanResult checked = checked_boolean(a, b, ops[k]);
+        const CheckedBoolean checked = valid_boolean(a, b, ops[k]);
         EXPECT_TRUE(checked.check.valid()) << what << ": checked " << boolean_op_name(ops[k]);
       }
     } catch (const std::exception& e) {

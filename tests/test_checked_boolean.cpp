@@ -1,4 +1,4 @@
-// checked_boolean: the Boolean the front ends run. Its result passes molsurf's check and
+// valid_boolean: the Boolean the front ends run (through checked_boolean). Its result passes molsurf's check and
 // CGAL's; where no rounding of the exact result is valid (sheets touching, or closer than
 // rounding keeps apart) b is moved by a step far below any feature, and only then.
 #include <gtest/gtest.h>
@@ -52,19 +52,19 @@ int expect_checked(const Mesh& a, const Mesh& b, const std::string& what) {
       const std::string name = what + " " + boolean_op_name(op) + " of " + order;
       const BooleanResult plain = boolean(*first, *second, op);
       const MeshCheck plain_check = check_mesh(plain.mesh);
-      const BooleanResult r = checked_boolean(*first, *second, op);
+      const CheckedBoolean r = valid_boolean(*first, *second, op);
       EXPECT_TRUE(r.check.valid()) << name << ": " << (r.check.defects().empty() ? "" : r.check.defects().front());
-      EXPECT_EQ(testing::cgal_defects(r.mesh), "") << name;
-      const double shift = norm(r.stats.b_moved_by);
+      EXPECT_EQ(testing::cgal_defects(r.result.mesh), "") << name;
+      const double shift = norm(r.result.stats.b_moved_by);
       if (plain_check.valid()) {
         EXPECT_EQ(shift, 0) << name;
-        EXPECT_TRUE(r.mesh.vertices == plain.mesh.vertices && r.mesh.faces == plain.mesh.faces) << name;
+        EXPECT_TRUE(r.result.mesh.vertices == plain.mesh.vertices && r.result.mesh.faces == plain.mesh.faces) << name;
         continue;
       }
       EXPECT_GT(shift, 0) << name;
       ++moved;
       EXPECT_LE(shift, 64 * std::ldexp(1.0, -36) * 1.0001) << name;  // the first step, coordinates under 64
-      EXPECT_NE(boolean_note(r.stats).find("moved by"), std::string::npos) << name;
+      EXPECT_NE(boolean_note(r.result.stats).find("moved by"), std::string::npos) << name;
       // The sliver wedges have no volume; moving b changes the volume by its area times the step.
       EXPECT_NEAR(r.check.volume, plain_check.volume, 1e-6 * std::fabs(plain_check.volume) + 1e-6) << name;
     }
@@ -104,17 +104,17 @@ TEST(CheckedBoolean, ChiralSolidAndItsMirrorImage) {
   EXPECT_GT(moved, 0);
 }
 
-// A valid result is returned as boolean() gives it, with the check filled in.
+// A valid result is returned as boolean() gives it, with its check.
 TEST(CheckedBoolean, ValidResultsAreUnchanged) {
   const Mesh a = make_icosphere({0, 0, 0}, 1.0, {.frequency = 3});
   const Mesh b = make_icosphere({0.7, 0.2, 0.1}, 0.8, {.frequency = 3});
   const BooleanResult plain = boolean(a, b, BooleanOp::union_);
-  const BooleanResult r = checked_boolean(a, b, BooleanOp::union_);
-  EXPECT_TRUE(r.mesh.vertices == plain.mesh.vertices && r.mesh.faces == plain.mesh.faces);
+  const CheckedBoolean r = valid_boolean(a, b, BooleanOp::union_);
+  EXPECT_TRUE(r.result.mesh.vertices == plain.mesh.vertices && r.result.mesh.faces == plain.mesh.faces);
   EXPECT_TRUE(r.check.valid());
   EXPECT_EQ(r.check.faces, plain.mesh.faces.size());
-  EXPECT_EQ(norm(r.stats.b_moved_by), 0);
-  EXPECT_TRUE(boolean_note(r.stats).empty());
+  EXPECT_EQ(norm(r.result.stats.b_moved_by), 0);
+  EXPECT_TRUE(boolean_note(r.result.stats).empty());
 }
 
 }  // namespace

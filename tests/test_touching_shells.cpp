@@ -122,7 +122,7 @@ TEST(TouchingShells, CheckReportsTouchingSheetsAsADefect) {
 }
 
 // Solids that meet along an edge or at a corner: the exact union holds the sheets apart but
-// touching, so no rounding of it passes the check. checked_boolean (and the command) then
+// touching, so no rounding of it passes the check. valid_boolean (and the command) then
 // move B by a step far below any feature and far above rounding, and say so, naming the
 // place; the result is valid. Over a whole face they join into one solid, with nothing
 // touching and nothing moved.
@@ -133,22 +133,22 @@ TEST(TouchingShells, BooleanOfTouchingSolidsMovesBApart) {
     const MeshCheck exact = check_mesh(boolean(a, b, BooleanOp::union_).mesh);
     EXPECT_FALSE(exact.valid()) << offset.x << offset.y << offset.z;
     EXPECT_GT(exact.contact_pairs, 0u);
-    const BooleanResult moved = checked_boolean(a, b, BooleanOp::union_);
+    const CheckedBoolean moved = valid_boolean(a, b, BooleanOp::union_);
     EXPECT_TRUE(moved.check.valid()) << offset.x << offset.y << offset.z;
-    const double shift = norm(moved.stats.b_moved_by);
+    const double shift = norm(moved.result.stats.b_moved_by);
     EXPECT_GT(shift, 0);
     EXPECT_LE(shift, std::ldexp(4.0, -36) * 1.0001);  // the first step: scale 4, the power of two above 2
     EXPECT_NEAR(moved.check.volume, 2.0, 1e-9);
-    EXPECT_NE(boolean_note(moved.stats).find("touch"), std::string::npos);
+    EXPECT_NE(boolean_note(moved.result.stats).find("touch"), std::string::npos);
     // The difference keeps A whole: nothing touches, nothing moves.
-    const BooleanResult difference = checked_boolean(a, b, BooleanOp::difference);
+    const CheckedBoolean difference = valid_boolean(a, b, BooleanOp::difference);
     EXPECT_TRUE(difference.check.valid());
-    EXPECT_EQ(norm(difference.stats.b_moved_by), 0.0);
+    EXPECT_EQ(norm(difference.result.stats.b_moved_by), 0.0);
   }
-  const BooleanResult joined = checked_boolean(a, make_box({1, 0, 0}, {2, 1, 1}), BooleanOp::union_);
+  const CheckedBoolean joined = valid_boolean(a, make_box({1, 0, 0}, {2, 1, 1}), BooleanOp::union_);
   EXPECT_TRUE(joined.check.valid());
-  EXPECT_EQ(norm(joined.stats.b_moved_by), 0.0);
-  EXPECT_TRUE(boolean_note(joined.stats).empty());
+  EXPECT_EQ(norm(joined.result.stats.b_moved_by), 0.0);
+  EXPECT_TRUE(boolean_note(joined.result.stats).empty());
   testing::TempDir dir;
   write_mesh(dir.path() / "a.off", a);
   write_mesh(dir.path() / "b.off", make_box({1, 1, 0}, {2, 2, 1}));

@@ -102,6 +102,7 @@ class RadiusTable {
  public:
   static RadiusTable builtin(const std::string& name);          // "protor", "bondi", "naccess"
   static bool is_builtin(const std::string& name);
+  static std::vector<std::string> builtin_names();  // in alphabetical order
   static RadiusTable from_file(const std::filesystem::path& path);
   static RadiusTable parse(const std::string& text, const std::string& source_name);
 

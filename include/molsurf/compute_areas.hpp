@@ -20,12 +20,13 @@ struct ComputedAreas {
   double seconds = 0;             // wall time of the arrangement
 };
 
-// Throws molsurf::Error for a coordinate that is not finite, a radius that is negative or
-// not finite, or such a probe (what the structure readers refuse).
+// Throws molsurf::Error for a coordinate that is not finite or a radius that is negative or
+// not finite (what the structure readers refuse), ParameterError for a probe out of
+// kProbeParameter's range (parameters.hpp).
 void check_spheres(std::span<const Atom> atoms, const SphereOptions& spheres);
 
 // Only spheres.probe is read of the sphere options. threads: 0 keeps OpenMP's default.
-// Refuses what check_spheres refuses.
+// Refuses what check_spheres refuses, and threads out of kThreadsParameter's range.
 ComputedAreas compute_areas(std::span<const Atom> atoms, const SphereOptions& spheres, int threads = 0);
 
 // Each atom's exact area: all of it, or (outer_only) only what lies on the outer shells.

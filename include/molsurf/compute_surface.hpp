@@ -15,6 +15,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "molsurf/atoms.hpp"
@@ -38,6 +39,7 @@ const char* surface_stage_name(SurfaceStage stage);  // "union", "cleanup", "che
 // spheres of r_vdW + probe), the solvent-excluded (molecular) surface (where the rolling
 // probe touches the atoms), or the van der Waals surface (spheres of r_vdW; the SAS at probe 0).
 enum class SurfaceKind { sas, ses, vdw };
+inline constexpr std::string_view kSurfaceKindNames[] = {"sas", "ses", "vdw"};  // in the enum's order
 const char* surface_kind_name(SurfaceKind kind);  // "sas", "ses", "vdw"
 
 struct ComputeSurfaceOptions {

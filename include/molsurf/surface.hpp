@@ -6,6 +6,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "molsurf/cancel.hpp"
 #include "molsurf/atoms.hpp"
@@ -62,6 +63,7 @@ enum class SurfaceMethod {
   one_pass,  // every atom's faces trimmed by its neighbours, all atoms in parallel (default)
   pairwise,  // hierarchical pairwise union along a k-d tree (the paper's formulation; reference)
 };
+inline constexpr std::string_view kSurfaceMethodNames[] = {"one-pass", "pairwise"};  // in the enum's order
 const char* surface_method_name(SurfaceMethod method);
 
 // The union's size before it is computed, from a sample of atoms trimmed on their own

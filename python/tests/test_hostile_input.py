@@ -51,8 +51,11 @@ def test_float_face_indices_and_wide_tags_are_refused():
     vertices = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
     faces = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
     assert molsurf.check(vertices, faces).valid
-    with pytest.raises(molsurf.Error, match=r"faces: not convertible to a numeric array: its elements are float64"):
+    # As a file's reader refuses '0.7' where an index belongs: the entry named, in its words.
+    with pytest.raises(molsurf.Error, match=r"^faces\[0, 0\]: expected an integer, found '0.7'$"):
         molsurf.check(vertices, faces + 0.7)
+    with pytest.raises(molsurf.Error, match=r"^faces\[0, 0\]: expected an integer, found '0.0'$"):
+        molsurf.check(vertices, faces.astype(float))  # whole, but floats: no index
     with pytest.raises(molsurf.Error, match=r"faces: .* bool"):
         molsurf.check(vertices, faces.astype(bool))
     with pytest.raises(molsurf.Error, match=r"tags: tags\[2\] is 4294967296, beyond 32 bits"):

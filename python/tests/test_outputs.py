@@ -1,5 +1,5 @@
-"""Writes from Python: a signal that ends the interpreter in the middle of a write leaves no
-temporary file, and residue numbers keep their full range."""
+"""Writes from Python: the same files as the command writes, a signal that ends the interpreter
+in the middle of a write leaves no temporary file, and residue numbers keep their full range."""
 import os
 import signal
 import subprocess
@@ -15,6 +15,27 @@ CHILD_ENV = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
 def run_child(script, cwd):
     return subprocess.run([sys.executable, "-c", textwrap.dedent(script)], cwd=cwd, env=CHILD_ENV,
                           capture_output=True, text=True, timeout=600)
+
+
+def test_the_command_and_python_write_the_same_files(tmp_path, data_dir, cli, crambin):
+    # One library call writes a surface's file for both (surface_files.hpp): the MSMS header
+    # names the surface and its source, --no-header and msms_header=False drop the header and
+    # the atom names alike.
+    structure = data_dir / "1crn.pdb"
+    for name, cli_options, python_options in [("s.vert", [], {}), ("s.vtp", [], {}), ("s.ply", ["--ascii"], {"ascii": True}),
+                                              ("n.vert", ["--no-header"], {"msms_header": False})]:
+        (tmp_path / "cli").mkdir(exist_ok=True)
+        run = subprocess.run([str(cli), "-q", structure, "-o", tmp_path / "cli" / name, *cli_options],
+                             capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        written = crambin.write(tmp_path / name, **python_options)
+        assert written
+        for file in written:
+            assert file.read_bytes() == (tmp_path / "cli" / file.name).read_bytes(), file.name
+    header = (tmp_path / "s.vert").read_text().splitlines()[0]
+    assert header.startswith("# MSMS-format vertices of the solvent accessible surface for 1crn.pdb")
+    rows = (tmp_path / "n.vert").read_text().splitlines()
+    assert not rows[0].startswith("#") and all(len(row.split()) == 9 for row in rows[:100])
 
 
 def test_file_size_signal_during_a_write_leaves_no_temporary(tmp_path, data_dir):

@@ -108,10 +108,10 @@ def test_bad_input_raises(coords, radii, match):
 def test_bad_coordinates_name_the_frame():
     xyz = np.zeros((3, 4, 3))
     xyz[2, 1, 0] = np.nan
-    with pytest.raises(molsurf.Error, match=r"coords\[2, 1\]"):
+    with pytest.raises(molsurf.Error, match=r"^coords\[2, 1, 0\]: nan is not a finite number$"):
         molsurf.areas(coords=xyz, radii=np.ones(4))
     xyz[2, 1, 0] = np.inf
-    with pytest.raises(molsurf.Error, match=r"coords\[2, 1\]"):
+    with pytest.raises(molsurf.Error, match=r"^coords\[2, 1, 0\]: inf is not a finite number$"):
         molsurf.areas(xyz, radii=np.ones(4))
 
 

@@ -29,12 +29,8 @@ constexpr std::size_t kNearCullFaces = 20000;
 }  // namespace
 
 const char* boolean_op_name(BooleanOp op) {
-  switch (op) {
-    case BooleanOp::union_: return "union";
-    case BooleanOp::intersection: return "intersection";
-    case BooleanOp::difference: return "difference";
-  }
-  return "?";
+  const auto index = static_cast<std::size_t>(op);
+  return index < std::size(kBooleanOpNames) ? kBooleanOpNames[index].data() : "?";
 }
 
 namespace {

@@ -1,15 +1,31 @@
-// The Boolean with its result checked, and moved apart where no rounding of the exact
-// result is a valid surface.
+// The Boolean of two meshes as the front ends run it: operands held to the engine's
+// contract, the result checked, and b moved apart where no rounding of the exact result is
+// a valid surface (boolean.hpp: checked_boolean, valid_boolean).
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 
 #include "molsurf/boolean.hpp"
+#include "molsurf/error.hpp"
+#include "molsurf/parameters.hpp"
 
 namespace molsurf {
 
 namespace {
+
+// An operand the outer envelope accepts besides a valid one: open, but otherwise sound
+// (2-manifold, oriented, no degenerate face, no self-intersection).
+bool open_but_sound(const MeshCheck& c) {
+  return c.nonmanifold_edges == 0 && c.nonmanifold_vertices == 0 && c.misoriented_edges == 0 &&
+         c.degenerate_faces == 0 && c.duplicate_faces == 0 && c.intersecting_pairs == 0;
+}
+
+std::string joined(const std::vector<std::string>& defects) {
+  std::string text;
+  for (const std::string& defect : defects) text += (text.empty() ? "" : "; ") + defect;
+  return text;
+}
 
 // Fixed directions, unit length in exact decimals and parallel to no axis or coordinate
 // plane, so no mirror plane or lattice of an input is aligned with them.
@@ -49,16 +65,17 @@ void sum_seconds_into(BooleanTimings& total, const BooleanTimings& more) {
 
 }  // namespace
 
-BooleanResult checked_boolean(const Mesh& a, const Mesh& b, BooleanOp op, const MeshCheckOptions& options) {
-  BooleanResult result = boolean(a, b, op);
-  result.check = check_mesh(result.mesh, options);
-  if (result.check.valid()) return result;
+CheckedBoolean valid_boolean(const Mesh& a, const Mesh& b, BooleanOp op, const MeshCheckOptions& options) {
+  CheckedBoolean out;
+  out.result = boolean(a, b, op);
+  out.check = check_mesh(out.result.mesh, options);
+  if (out.check.valid()) return out;
 
   // The exact result has no valid rounding: its sheets touch, or lie closer than rounding
   // keeps apart. Moving b by far more than rounding and far less than any feature of a
   // molecular or engineering mesh gives a nearby configuration whose result rounds well.
-  const Vec3 defect_near = first_defect_place(result.mesh, result.check);
-  BooleanTimings seconds = result.stats.seconds;
+  const Vec3 defect_near = first_defect_place(out.result.mesh, out.check);
+  BooleanTimings seconds = out.result.stats.seconds;
   const double scale = coordinate_scale(a, b);
   for (const int exponent : kStepExponents)
     for (const Vec3& direction : kDirections) {
@@ -70,16 +87,18 @@ BooleanResult checked_boolean(const Mesh& a, const Mesh& b, BooleanOp op, const 
       if (!check_mesh(moved, options).valid()) continue;
       BooleanResult retry = boolean(a, moved, op);
       sum_seconds_into(seconds, retry.stats.seconds);
-      retry.check = check_mesh(retry.mesh, options);
-      if (!retry.check.valid()) continue;
+      MeshCheck retry_check = check_mesh(retry.mesh, options);
+      if (!retry_check.valid()) continue;
       retry.stats.seconds = seconds;
       retry.stats.b_moved_by = shift;
       retry.stats.unmoved_defect_near = defect_near;
-      return retry;
+      out.result = std::move(retry);
+      out.check = std::move(retry_check);
+      return out;
     }
-  result.stats.seconds = seconds;
-  result.stats.unmoved_defect_near = defect_near;
-  return result;
+  out.result.stats.seconds = seconds;
+  out.result.stats.unmoved_defect_near = defect_near;
+  return out;
 }
 
 std::string boolean_note(const BooleanStats& stats) {
@@ -93,6 +112,60 @@ std::string boolean_note(const BooleanStats& stats) {
                 "(%.3g, %.3g, %.3g) Å",
                 p.x, p.y, p.z, m.x, m.y, m.z);
   return text;
+}
+
+bool CheckedBoolean::acceptable(const MeshCheck& c) const {
+  // From an open operand the envelope is open: its free boundary and the edges where a
+  // sheet seen from both sides meets the rest are expected there, nothing else.
+  return c.valid() || (open_input && c.misoriented_edges == 0 && c.degenerate_faces == 0 &&
+                       c.duplicate_faces == 0 && c.intersecting_pairs == 0);
+}
+
+std::string CheckedBoolean::problem(const MeshCheck& c) const {
+  if (acceptable(c)) return {};
+  std::string why = joined(c.defects());
+  if (!open_input) {
+    // valid_boolean moved B in every step it has and no result passed.
+    const Vec3& p = result.stats.unmoved_defect_near;
+    char where[240];
+    std::snprintf(where, sizeof where,
+                  " (near (%.6g, %.6g, %.6g) A and B touch, or their sheets lie closer than rounding to doubles "
+                  "keeps apart, and moving B by up to 2^-20 of the coordinates' scale did not resolve it: move "
+                  "one apart, or into the other)",
+                  p.x, p.y, p.z);
+    why += where;
+  }
+  return "the result failed its check: " + why;
+}
+
+CheckedBoolean checked_boolean(const Mesh& a, const Mesh& b, BooleanOp op, std::string_view name_a,
+                               std::string_view name_b, bool outer_envelope) {
+  if (outer_envelope && op != BooleanOp::union_)
+    throw ParameterError("outer_only", std::string("keeps the outer envelope of a union; it does not apply to ") +
+                                           boolean_op_name(op));
+  bool open_input = false;
+  // The engine's contract: refuse operands it cannot promise a valid result for.
+  for (const auto& [mesh, name] : {std::pair{&a, name_a}, std::pair{&b, name_b}}) {
+    const MeshCheck c = check_mesh(*mesh);
+    if (c.valid() && !c.empty()) continue;
+    if (outer_envelope && !c.empty() && open_but_sound(c)) {
+      open_input = true;
+      continue;
+    }
+    throw Error(std::string(name) +
+                (outer_envelope ? ": not a valid surface (closed or open), so no outer envelope is defined: "
+                                : ": not a valid closed surface, so no Boolean is defined: ") +
+                (c.empty() ? std::string("no faces") : joined(c.defects())));
+  }
+  CheckedBoolean out;
+  if (outer_envelope) {
+    out.result = union_outer_envelope(a, b);
+    out.check = check_mesh(out.result.mesh);
+  } else {
+    out = valid_boolean(a, b, op);
+  }
+  out.open_input = open_input;
+  return out;
 }
 
 }  // namespace molsurf

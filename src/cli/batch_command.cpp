@@ -24,6 +24,14 @@ extern char** environ;
 
 namespace molsurf::cli {
 
+namespace {
+
+// The sweep's own options (the command line's only).
+constexpr WholeParameter kJobsParameter{"jobs", 0, 4096};
+constexpr NumberParameter kTimeoutParameter{"timeout", 0, 1e9, true};  // seconds
+
+}  // namespace
+
 void BatchCommand::add_options(CLI::App& app) {
   app.add_option("INPUT", input,
                  "A list of structure files (one path per line, '#' comments; relative to the list's folder)\n"
@@ -35,13 +43,13 @@ void BatchCommand::add_options(CLI::App& app) {
                  "message), manifest.tsv (what is done, for reruns), logs/NAME.log for failures")
       ->required();
   app.add_option("-j,--jobs", jobs, "Structures run at a time, each on one thread (default: one per core)")
-      ->check(whole_number(0, 4096));
+      ->check(whole_number_in(kJobsParameter));
   app.add_option("--mesh", mesh,
                  "Also write each structure's surface in this format (vtp, vtk, ply, off, stl, obj, vert, msh);\n"
                  "default: the exact areas and volumes only (--areas-only)")
       ->check(CLI::IsMember({"vtp", "vtk", "ply", "off", "stl", "obj", "vert", "msh"}));
   app.add_option("--timeout", timeout, "Seconds one structure may take before it is stopped and counted failed")
-      ->check(finite_number(0, 1e9, true));
+      ->check(number_in(kTimeoutParameter));
   app.add_flag("--retry-failed", retry_failed,
                "Run again the structures that failed before (a rerun skips finished ones, failed or not)");
   app.add_flag("--progress", progress, "Show the progress line even when stderr is not a terminal");

@@ -7,6 +7,7 @@
 #include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "molsurf/parameters.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/report.hpp"
 #include "molsurf/standard_output.hpp"
@@ -18,7 +19,7 @@ namespace molsurf::cli {
 void BooleanCommand::add_options(CLI::App& app) {
   app.add_option("OP", operation, "union, intersection or difference (A minus B)")
       ->required()
-      ->check(CLI::IsMember({"union", "intersection", "difference"}));
+      ->check(one_of(kBooleanOpNames));
   app.add_option("A", a, "First mesh: closed, outward, 2-manifold, no self-intersection")
       ->required()
       ->check(readable_file());
@@ -30,68 +31,32 @@ void BooleanCommand::add_options(CLI::App& app) {
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
 }
 
-namespace {
-
-// An operand the outer envelope accepts: valid, or open but otherwise sound (2-manifold,
-// oriented, no degenerate face, no self-intersection).
-bool open_but_sound(const MeshCheck& c) {
-  return c.nonmanifold_edges == 0 && c.nonmanifold_vertices == 0 && c.misoriented_edges == 0 &&
-         c.degenerate_faces == 0 && c.duplicate_faces == 0 && c.intersecting_pairs == 0;
-}
-
-}  // namespace
-
 int BooleanCommand::run() const {
   const std::vector<std::filesystem::path> inputs{a, b};
   const std::vector<OutputRequest> outputs{{output, "-o", true}};
   check_output_paths(inputs, outputs);  // never over an operand, a link or a device
   mesh_format_from_path(output);        // reject an unknown extension before any work
-  const BooleanOp op = operation == "union"          ? BooleanOp::union_
-                       : operation == "intersection" ? BooleanOp::intersection
-                                                     : BooleanOp::difference;
-  if (outer_only && op != BooleanOp::union_)
-    throw molsurf::Error("--outer-only keeps the outer envelope of a union; it does not apply to " + operation);
+  const BooleanOp op = boolean_op_from_name(operation);
   const Mesh mesh_a = read_mesh(a), mesh_b = read_mesh(b);
-  // The engine's contract: refuse operands it cannot promise a valid result for.
-  bool open_input = false;
-  for (const auto& [mesh, path] : {std::pair{&mesh_a, &a}, std::pair{&mesh_b, &b}}) {
-    const MeshCheck c = check_mesh(*mesh);
-    if (c.valid()) continue;
-    if (outer_only && open_but_sound(c)) {
-      open_input = true;
-      continue;
-    }
-    std::string why;
-    for (const std::string& d : c.defects()) why += "\n  - " + d;
-    throw molsurf::Error(path->string() +
-                         (outer_only ? ": not a valid surface (closed or open), so no outer envelope is defined:"
-                                     : ": not a valid closed surface, so no Boolean is defined:") +
-                         why);
-  }
-  BooleanResult r = outer_only ? union_outer_envelope(mesh_a, mesh_b) : checked_boolean(mesh_a, mesh_b, op);
-  // From an open operand the envelope is open: its free boundary and the edges where a
-  // sheet seen from both sides meets the rest are expected there, nothing else.
-  const auto acceptable = [open_input](const MeshCheck& c) {
-    return c.valid() || (open_input && c.misoriented_edges == 0 && c.degenerate_faces == 0 &&
-                         c.duplicate_faces == 0 && c.intersecting_pairs == 0);
-  };
+  // The operands held to the engine's contract, the operation, the result's check: the library's.
+  const CheckedBoolean r = checked_boolean(mesh_a, mesh_b, op, a.string(), b.string(), outer_only);
+  const auto acceptable = [&r](const MeshCheck& c) { return r.acceptable(c); };
   // Checked before anything is written, as the file will hold it (.vert, .stl round).
-  if (outer_only) r.check = check_mesh(r.mesh);
-  const MeshCheck& computed = r.check;
-  const bool empty = r.mesh.faces.empty();
+  const bool empty = r.result.mesh.faces.empty();
   std::optional<WrittenCheck> written;
-  if (!empty) written = check_as_written(output, r.mesh, computed, MeshWriteOptions{}, MeshCheckOptions{}, acceptable);
-  const MeshCheck& check = written ? written->check : computed;
+  if (!empty)
+    written = check_as_written(output, r.result.mesh, r.check, MeshWriteOptions{}, MeshCheckOptions{}, acceptable);
+  const MeshCheck& check = written ? written->check : r.check;
   const bool ok = !empty && acceptable(check);
   // The file goes to its temporary now and replaces the target only after the report is out.
   std::optional<OutputFiles> files;
   if (ok) {
     files.emplace();
-    files->add_mesh(output, r.mesh, written->options);
+    files->add_mesh(output, r.result.mesh, written->options);
   }
   const bool open_result = ok && !check.valid();
   if (!quiet) {
-    const BooleanStats& s = r.stats;
+    const BooleanStats& s = r.result.stats;
     std::printf("%s%s of %s (%zu faces) and %s (%zu faces) -> %s\n", boolean_op_name(op),
                 outer_only ? " (outer envelope)" : "", a.string().c_str(), s.faces_a, b.string().c_str(), s.faces_b,
                 output.string().c_str());
@@ -114,7 +79,7 @@ int BooleanCommand::run() const {
       std::printf("the result is an open surface, as an open operand makes it: %zu boundary edges, %zu edges where "
                   "a two-sided sheet meets the rest (expected, not a defect)\n",
                   check.boundary_edges, check.nonmanifold_edges);
-    if (const std::string note = boolean_note(r.stats); !note.empty()) std::printf("note: %s\n", note.c_str());
+    if (const std::string note = boolean_note(r.result.stats); !note.empty()) std::printf("note: %s\n", note.c_str());
     if (written && !written->note.empty()) std::printf("note: %s\n", written->note.c_str());
   }
   if (empty)
@@ -123,21 +88,7 @@ int BooleanCommand::run() const {
     throw molsurf::Error(output.string() + ": not written: the " + boolean_op_name(op) + " of " + a.string() +
                          " and " + b.string() + " is empty (no faces); an existing file there is left as it was");
   if (!ok) {
-    std::string why;
-    for (const std::string& defect : check.defects()) why += (why.empty() ? "" : "; ") + defect;
-    if (!outer_only) {
-      // checked_boolean moved B in every step it has and no result passed.
-      const Vec3& c = r.stats.unmoved_defect_near;
-      char where[240];
-      std::snprintf(where, sizeof where,
-                    " (near (%.6g, %.6g, %.6g) A and B touch, or their sheets lie closer than rounding to doubles "
-                    "keeps apart, and moving B by up to 2^-20 of the coordinates' scale did not resolve it: move "
-                    "one apart, or into the other)",
-                    c.x, c.y, c.z);
-      why += where;
-    }
-    std::fprintf(stderr, "molsurf: error: %s: not written: the result failed its check: %s\n",
-                 output.string().c_str(), why.c_str());
+    std::fprintf(stderr, "molsurf: error: %s: not written: %s\n", output.string().c_str(), r.problem(check).c_str());
     return 1;
   }
   flush_standard_output();  // the report reached standard output, or nothing is replaced

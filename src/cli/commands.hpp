@@ -7,9 +7,14 @@
 #include <string>
 #include <vector>
 
+#include <span>
+
 #include "molsurf/atoms.hpp"
+#include "molsurf/compute_areas.hpp"
+#include "molsurf/compute_surface.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
+#include "molsurf/written_check.hpp"
 
 namespace molsurf::cli {
 
@@ -55,12 +60,24 @@ struct SurfaceCommand {
   bool fill_inside = false;
   const CLI::Option* volume_option = nullptr;
 
-  void add_options(CLI::App& app);
+  void add_options(CLI::App& app);  // surface_options.cpp
   // --threads lowered, with a note, to what this process can start (startable_threads).
   void cap_threads();
   int run() const;
   int run_areas_only() const;
   int run_model_meshes() const;
+
+  // The library's options from these (which the library checks again: parameters.hpp).
+  SurfaceKind kind() const;
+  std::uint64_t max_memory_bytes() const;  // 0: the machine's
+  ReadOptions read_options() const;        // --chains split at its commas
+  ComputeSurfaceOptions compute_options() const;
+  // The surface checked as `out` will hold it, written as the library writes any surface's
+  // file (surface_files.hpp); a note when the format needed more precision.
+  WrittenCheck checked_as_written(const std::filesystem::path& out, const ComputedSurface& computed,
+                                  std::span<const Atom> atoms) const;
+  // Every model's exact areas, small models in parallel.
+  std::vector<FrameAreas> model_areas(std::span<const Structure> models) const;
 };
 
 struct CheckCommand {

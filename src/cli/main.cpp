@@ -6,8 +6,10 @@
 
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
+#include "molsurf/parameters.hpp"
 #include "molsurf/standard_output.hpp"
 
 int main(int argc, char** argv) {
@@ -83,6 +85,10 @@ int main(int argc, char** argv) {
     // The text report is output too: a report that did not reach standard output fails the run.
     molsurf::flush_standard_output();
     return status;
+  } catch (const molsurf::ParameterError& e) {
+    // A rule between options, found by the library: named as the command spells the option.
+    std::cerr << "molsurf: error: " << option_spelling(e.parameter()) << ": " << e.problem() << "\n";
+    return 1;
   } catch (const molsurf::Error& e) {
     std::cerr << "molsurf: error: " << e.what() << "\n";
     return 1;

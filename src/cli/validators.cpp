@@ -5,65 +5,67 @@
 
 #include <cerrno>
 #include <charconv>
-#include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+
+#include "common/message_text.hpp"
 
 namespace molsurf::cli {
 
 namespace {
 
-std::string g(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 // The value as typed, short and printable (it is echoed in the message).
-std::string shown(const std::string& value) {
-  std::string text;
-  for (char c : value.substr(0, 32)) text += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-  return "'" + text + (value.size() > 32 ? "...'" : "'");
+std::string shown(const std::string& value) { return detail::quoted_text(value, 32); }
+
+std::string_view without_plus(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  return text;
 }
 
 }  // namespace
 
-CLI::Validator finite_number(double low, double high, bool low_open) {
-  const std::string range = (low_open ? "(" : "[") + g(low) + ", " + g(high) + "]";
+CLI::Validator number_in(const NumberParameter& parameter) {
   return CLI::Validator(
-      [=](std::string& value) -> std::string {
-        std::string_view text = value;
-        if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+      [parameter](std::string& value) -> std::string {
+        const std::string_view text = without_plus(value);
         double number = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
         if (text.empty() || end != text.data() + text.size() ||
             (error != std::errc() && error != std::errc::result_out_of_range))
           return shown(value) + " is not a number";
-        if (error == std::errc::result_out_of_range || !std::isfinite(number))
-          return shown(value) + " is not a finite number; expected one in " + range;
-        if (number < low || (low_open && number == low) || number > high)
-          return g(number) + " is out of range; expected a number in " + range;
-        return {};
+        // Beyond the doubles: 1e999 is an infinity and 1e-999 zero, which the range then judges.
+        if (error == std::errc::result_out_of_range) number = std::strtod(std::string(text).c_str(), nullptr);
+        return problem(parameter, number);
       },
-      "NUMBER in " + range);
+      "NUMBER in " + range_text(parameter));
 }
 
-CLI::Validator whole_number(long long low, long long high) {
-  const std::string range = std::to_string(low) + ".." + std::to_string(high);
+CLI::Validator whole_number_in(const WholeParameter& parameter) {
   return CLI::Validator(
-      [=](std::string& value) -> std::string {
-        std::string_view text = value;
-        if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+      [parameter](std::string& value) -> std::string {
+        const std::string_view text = without_plus(value);
         long long number = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
         if (text.empty() || end != text.data() + text.size() ||
             (error != std::errc() && error != std::errc::result_out_of_range))
-          return shown(value) + " is not a whole number; expected one in " + range;
-        if (error == std::errc::result_out_of_range || number < low || number > high)
-          return shown(value) + " is out of range; expected a whole number in " + range;
-        return {};
+          return shown(value) + " is not a whole number; expected one in " + range_text(parameter);
+        if (error == std::errc::result_out_of_range)
+          return shown(value) + " is out of range; expected a whole number in " + range_text(parameter);
+        return problem(parameter, number);
       },
-      "INTEGER in " + range);
+      "INTEGER in " + range_text(parameter));
+}
+
+CLI::Validator one_of(std::span<const std::string_view> names) {
+  std::string list;
+  for (const std::string_view name : names) list += (list.empty() ? "" : ",") + std::string(name);
+  return CLI::Validator([names](std::string& value) { return choice_problem(value, names); }, "{" + list + "}");
+}
+
+CLI::Validator radius_set_name() {
+  std::string list;
+  for (const std::string& name : RadiusTable::builtin_names()) list += (list.empty() ? "" : ",") + name;
+  return CLI::Validator([](std::string& value) { return radius_set_problem(value); }, "{" + list + "}");
 }
 
 CLI::Validator readable_file() {
@@ -82,6 +84,13 @@ CLI::Validator readable_file() {
         return {};
       },
       "FILE");
+}
+
+std::string option_spelling(std::string_view parameter) {
+  std::string option = "--" + std::string(parameter);
+  for (char& c : option)
+    if (c == '_') c = '-';
+  return option;
 }
 
 }  // namespace molsurf::cli

@@ -10,10 +10,12 @@
 #include <iterator>
 #include <sstream>
 
+#include "common/message_text.hpp"
 #include "mesh/polygon_triangulation.hpp"
 #include "io/coordinate_range.hpp"
 #include "io/mesh_formats.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/input_checks.hpp"
 
 namespace molsurf {
 
@@ -114,13 +116,7 @@ void append_number(std::string& out, float value) {
 
 namespace {
 
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string shown(text.substr(0, kMaxShown));
-  for (char& c : shown)
-    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
-  return "'" + shown + (text.size() > kMaxShown ? "...'" : "'");
-}
+std::string quoted(std::string_view text) { return detail::quoted_text(text, 40); }
 
 }  // namespace
 
@@ -133,7 +129,7 @@ double parse_double(std::string_view text, const path& file, std::size_t line, s
     fail(file, line, std::string(what) + ": number out of range " + quoted(text));
   if (result.ec != std::errc() || result.ptr != text.data() + text.size())
     fail(file, line, std::string(what) + ": expected a number, found " + quoted(text));
-  if (!std::isfinite(value)) fail(file, line, std::string(what) + ": non-finite number " + quoted(text));
+  if (!std::isfinite(value)) fail(file, line, std::string(what) + ": " + coordinate_problem(value));
   return value;
 }
 
@@ -144,7 +140,7 @@ long long parse_integer(std::string_view text, const path& file, std::size_t lin
   if (result.ec == std::errc::result_out_of_range)
     fail(file, line, std::string(what) + ": integer out of range " + quoted(text));
   if (result.ec != std::errc() || result.ptr != text.data() + text.size())
-    fail(file, line, std::string(what) + ": expected an integer, found " + quoted(text));
+    fail(file, line, std::string(what) + ": " + integer_text_problem(text));
   return value;
 }
 
@@ -166,10 +162,8 @@ void add_polygon(Mesh& mesh, std::span<const long long> polygon, std::size_t ver
   if (polygon.size() < 3)
     fail(file, line, "face with " + std::to_string(polygon.size()) + " vertices (need at least 3)");
   for (long long v : polygon)
-    if (v < 0 || static_cast<unsigned long long>(v) >= vertex_count)
-      fail(file, line, "vertex index " + std::to_string(v + first_index) + " out of range (" +
-                           std::to_string(first_index) + ".." +
-                           std::to_string(static_cast<long long>(vertex_count) - 1 + first_index) + ")");
+    if (std::string problem = vertex_index_problem(v + first_index, vertex_count, first_index); !problem.empty())
+      fail(file, line, problem);
   if (polygon.size() == 3) {
     mesh.faces.push_back({static_cast<Index>(polygon[0]), static_cast<Index>(polygon[1]), static_cast<Index>(polygon[2])});
     return;

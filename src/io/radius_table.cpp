@@ -48,12 +48,18 @@ bool is_freesasa_configuration(const std::string& text) {
 
 bool RadiusTable::is_builtin(const std::string& name) { return detail::builtin_radius_sets().count(name) > 0; }
 
+std::vector<std::string> RadiusTable::builtin_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, text] : detail::builtin_radius_sets()) names.push_back(name);
+  return names;
+}
+
 RadiusTable RadiusTable::builtin(const std::string& name) {
   const auto& sets = detail::builtin_radius_sets();
   const auto found = sets.find(name);
   if (found == sets.end()) {
     std::string known;
-    for (const auto& [set_name, text] : sets) known += (known.empty() ? "" : ", ") + set_name;
+    for (const std::string& set_name : builtin_names()) known += (known.empty() ? "" : ", ") + set_name;
     throw Error("unknown radius set '" + name + "' (built-in sets: " + known +
                 "; use a radius file for others)");
   }

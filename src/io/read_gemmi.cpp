@@ -22,6 +22,7 @@
 #include "io/text_fields.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/gemmi_structure.hpp"
+#include "molsurf/parameters.hpp"
 
 namespace molsurf::detail {
 namespace {
@@ -295,6 +296,7 @@ namespace molsurf {
 
 Structure structure_from_gemmi(const gemmi::Structure& structure, const ReadOptions& options,
                                const std::filesystem::path& source) {
+  validate(options);
   const std::filesystem::path name = source.empty() ? std::filesystem::path(structure.name) : source;
   const StructureFormat format =
       structure.input_format == gemmi::CoorFormat::Pdb ? StructureFormat::pdb : StructureFormat::mmcif;

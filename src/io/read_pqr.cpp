@@ -10,6 +10,7 @@
 
 #include "io/structure_readers.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/input_checks.hpp"
 
 namespace molsurf::detail {
 namespace {
@@ -105,14 +106,15 @@ ModelRecords read_pqr(const std::filesystem::path& path, std::optional<int> mode
                                            "charge", "radius"};
     for (std::size_t i = 0; i < 5; ++i) {
       const std::string_view field = fields[number_field + 1 + i];
-      const std::optional<double> value = parse_double(field);
+      // Coordinates and the radius may spell NaN or infinity: refused below, in their own words.
+      const std::optional<double> value = i == 3 ? parse_double(field) : parse_real(field);
       if (!value) field_error(value_names[i], field);
       values[i] = *value;
     }
-    for (std::size_t i : {0, 1, 2, 4})
+    for (std::size_t i : {0, 1, 2})
       check_coordinate_range(path, line_number, values[i], record + " record: " + value_names[i]);
-    if (values[4] < 0)
-      fail(path, line_number, record + " record: negative radius " + excerpt(fields[number_field + 5]));
+    if (const std::string problem = radius_problem(values[4]); !problem.empty())
+      fail(path, line_number, record + " record: radius: " + problem);
     atom.centre = {values[0], values[1], values[2]};
     atom.charge = values[3];
     atom.radius = values[4];

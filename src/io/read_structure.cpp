@@ -16,17 +16,22 @@
 #include "io/text_fields.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/parameters.hpp"
 
 namespace molsurf {
 namespace detail {
 
-std::optional<double> parse_double(std::string_view field) {
+std::optional<double> parse_real(std::string_view field) {
   if (!field.empty() && field.front() == '+') field.remove_prefix(1);
   double value = 0;
   const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (field.empty() || error != std::errc() || end != field.data() + field.size() ||
-      !std::isfinite(value))
-    return std::nullopt;
+  if (field.empty() || error != std::errc() || end != field.data() + field.size()) return std::nullopt;
+  return value;
+}
+
+std::optional<double> parse_double(std::string_view field) {
+  const std::optional<double> value = parse_real(field);
+  if (!value || !std::isfinite(*value)) return std::nullopt;
   return value;
 }
 
@@ -189,6 +194,7 @@ Structure read_sphere_list(const std::filesystem::path& path, const ReadOptions&
 }  // namespace
 
 Structure read_structure(const std::filesystem::path& path, const ReadOptions& options) {
+  validate(options);
   detail::require_regular_file(path);
   // Checked here because gemmi reports an empty file as a failed read.
   std::error_code ec;
@@ -206,6 +212,7 @@ Structure read_structure(const std::filesystem::path& path, const ReadOptions& o
 }
 
 std::vector<Structure> read_all_models(const std::filesystem::path& path, const ReadOptions& options) {
+  validate(options);
   const StructureFormat format = structure_format_from_path(path);
   if (format != StructureFormat::pdb && format != StructureFormat::mmcif) {
     // One model or few (PQR, xyzr): model by model.

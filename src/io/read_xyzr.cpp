@@ -6,6 +6,7 @@
 
 #include "io/structure_readers.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/input_checks.hpp"
 
 namespace molsurf::detail {
 
@@ -24,17 +25,17 @@ std::vector<Atom> read_xyzr(const std::filesystem::path& path, std::uint64_t max
     double values[4];
     constexpr const char* value_names[] = {"x", "y", "z", "radius"};
     for (std::size_t i = 0; i < 4; ++i) {
-      const std::optional<double> value = parse_double(fields[i]);
+      const std::optional<double> value = parse_real(fields[i]);
       if (!value)
         fail(path, line_number,
              std::string(value_names[i]) + " " + excerpt(fields[i]) + " is not a number");
       values[i] = *value;
     }
-    for (std::size_t i = 0; i < 4; ++i) check_coordinate_range(path, line_number, values[i], value_names[i]);
+    for (std::size_t i = 0; i < 3; ++i) check_coordinate_range(path, line_number, values[i], value_names[i]);
     // Radius 0 is accepted here and dropped (and counted) by read_structure: such a sphere
     // adds nothing to a union of balls. A negative radius is a mistake.
-    if (values[3] < 0)
-      fail(path, line_number, "radius must be positive, found " + escaped(fields[3]));
+    if (const std::string problem = radius_problem(values[3]); !problem.empty())
+      fail(path, line_number, "radius: " + problem);
     Atom atom;
     atom.centre = {values[0], values[1], values[2]};
     atom.radius = values[3];

@@ -232,4 +232,21 @@ std::string mesh_check_json(const MeshCheck& c, const std::string& file) {
   return j.str();
 }
 
+std::string format_volume_mesh_report(const VolumeMeshReport& v, const std::filesystem::path& file) {
+  char line[256];
+  std::string text;
+  std::snprintf(line, sizeof line, "  volume mesh           %s: %zu tetrahedra, %zu nodes (%.2f s)\n", file.string().c_str(),
+                v.tetrahedra, v.nodes, v.seconds);
+  text += line;
+  for (const VolumeRegion& r : v.regions) {
+    std::snprintf(line, sizeof line, "    %-19s %zu tetrahedra, volume %.2f A^3 (physical %d)\n", r.name.c_str(),
+                  r.tetrahedra, r.volume, r.physical);
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "    quality             min dihedral %.2f deg; radius ratio min %.3f, median %.3f\n",
+                v.min_dihedral_deg, v.min_radius_ratio, v.median_radius_ratio);
+  text += line;
+  return text;
+}
+
 }  // namespace molsurf

@@ -87,6 +87,9 @@ class DataLines {
   std::vector<std::string_view> fields_;
 };
 std::optional<double> parse_double(std::string_view field);  // whole field, finite, '+' allowed
+// The same, NaN and infinities too: for values whose non-finite spelling gets its own message
+// (coordinates and radii: coordinate_problem, radius_problem).
+std::optional<double> parse_real(std::string_view field);
 // A whole field as an integer of type Int ('+' allowed); nullopt when it is not one or
 // does not fit.
 template <class Int = int>

@@ -1,40 +1,33 @@
 #include "molsurf/compute_areas.hpp"
 
-#include <cstdio>
-
 #include <chrono>
 #include <cmath>
 #include <string>
 
 #include "molsurf/error.hpp"
-
+#include "molsurf/input_checks.hpp"
+#include "molsurf/parameters.hpp"
 #include "molsurf/surface_measures.hpp"
 
 namespace molsurf {
 
 void check_spheres(std::span<const Atom> atoms, const SphereOptions& spheres) {
-  auto number = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return std::string(text);
-  };
-  if (!std::isfinite(spheres.probe) || spheres.probe < 0)
-    throw Error("probe radius " + number(spheres.probe) + ": not a finite number of zero or more");
+  check(kProbeParameter, spheres.probe);
   // Atoms that come from no file (Python, a library caller): what exact predicates cannot
-  // take. The readers' tighter bound (coordinate_range.hpp) is theirs and the Python
-  // module's; beyond it a surface is computed and, where doubles no longer resolve the
-  // spheres, fails its check (SurfaceCheckFailed).
+  // take. The readers' tighter bound (kMaxCoordinate) is theirs and the Python module's;
+  // beyond it a surface is computed and, where doubles no longer resolve the spheres, fails
+  // its check (SurfaceCheckFailed).
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom& a = atoms[i];
     const std::string atom = "atoms: atom " + std::to_string(i + 1) + " (counting from 1)";
     for (const double x : {a.centre.x, a.centre.y, a.centre.z})
-      if (!std::isfinite(x)) throw Error(atom + ": coordinate " + number(x) + " is not a finite number");
-    if (!std::isfinite(a.radius) || a.radius < 0)
-      throw Error(atom + ": radius " + number(a.radius) + " is not a finite number of zero or more");
+      if (!std::isfinite(x)) throw Error(atom + ": coordinate: " + coordinate_problem(x));
+    if (!std::isfinite(a.radius) || a.radius < 0) throw Error(atom + ": radius: " + radius_problem(a.radius));
   }
 }
 
 ComputedAreas compute_areas(std::span<const Atom> atoms, const SphereOptions& spheres, int threads) {
+  check(kThreadsParameter, threads);
   check_spheres(atoms, spheres);
   const auto start = std::chrono::steady_clock::now();
   std::vector<Vec3> centres(atoms.size());

@@ -2,6 +2,7 @@
 
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/true_points.hpp"
+#include "molsurf/parameters.hpp"
 
 #include <omp.h>
 
@@ -146,12 +147,8 @@ class Pipeline {
 }  // namespace
 
 const char* surface_kind_name(SurfaceKind kind) {
-  switch (kind) {
-    case SurfaceKind::sas: return "sas";
-    case SurfaceKind::ses: return "ses";
-    case SurfaceKind::vdw: return "vdw";
-  }
-  return "?";
+  const auto index = static_cast<std::size_t>(kind);
+  return index < std::size(kSurfaceKindNames) ? kSurfaceKindNames[index].data() : "?";
 }
 
 const char* surface_stage_name(SurfaceStage stage) {
@@ -206,6 +203,7 @@ void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& s
 
 ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
   const auto start = std::chrono::steady_clock::now();
+  validate(requested);
   // The van der Waals surface is the accessible one at probe 0.
   ComputeSurfaceOptions options = requested;
   if (options.surface == SurfaceKind::vdw) {

@@ -20,14 +20,14 @@ namespace {
 
 // One merge of the tree. `checked`: the union checked, with the second operand moved by a
 // step far below the facets where no rounding of the exact union is valid
-// (checked_boolean), so that no merge hands a broken operand on; a check per merge more
+// (valid_boolean), so that no merge hands a broken operand on; a check per merge more
 // than doubles the method's time (the merges work on the faces near the other operand,
 // the check on all), so it is the second try, when the plain tree's surface fails.
 BooleanResult union_merge(const Mesh& left, const Mesh& right, bool checked) {
   if (!checked) return boolean(left, right, BooleanOp::union_);
   MeshCheckOptions quick;
   quick.max_examples = 1;
-  return checked_boolean(left, right, BooleanOp::union_, quick);
+  return valid_boolean(left, right, BooleanOp::union_, quick).result;
 }
 
 // The leaf order of the merge tree. The tree joins consecutive pairs level by level, so a
@@ -138,7 +138,8 @@ class MergeTree {
 }  // namespace
 
 const char* surface_method_name(SurfaceMethod method) {
-  return method == SurfaceMethod::one_pass ? "one-pass" : "pairwise";
+  const auto index = static_cast<std::size_t>(method);
+  return index < std::size(kSurfaceMethodNames) ? kSurfaceMethodNames[index].data() : "?";
 }
 
 namespace {
