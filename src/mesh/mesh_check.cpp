@@ -352,6 +352,8 @@ void check_self_intersections(const Mesh& mesh, const geometry::BoxBvh& bvh, con
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t k = 0; k < count; ++k)
       errors.run(k, [&] {
+        // Past the cap, whole leaves are skipped: a pile's every face box meets every other.
+        if (defects_found.load(std::memory_order_relaxed) >= cap) return;
         bvh.for_each_pair_at_leaf(static_cast<std::size_t>(k), [&](std::uint32_t face_i, std::uint32_t j) {
           if (!fans.empty() && fans.share(mesh, face_i, j)) return;
           if (defects_found.load(std::memory_order_relaxed) >= cap) return;
@@ -422,8 +424,10 @@ void check_components(const Mesh& mesh, const std::function<const geometry::BoxB
       if (d != c && box_contains(box[d], box[c])) visit(d);
     });
   };
-  if (!result.closed() || result.nonmanifold_edges > 0) {
-    // Without closed components "inside" means nothing: fall back to the volume sign of
+  if (!result.closed() || result.nonmanifold_edges > 0 || result.intersecting_pairs > 0) {
+    // Without closed components, or with components that cross each other, "inside" means
+    // nothing (and a pile of coincident copies would cost a ray through every copy from
+    // every vertex of each, all of them contacts): fall back to the volume sign of
     // components that no other component's box contains.
     for (std::uint32_t c = 0; c < components.count; ++c) {
       if (volume[c] > 0) continue;
