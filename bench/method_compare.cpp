@@ -1,4 +1,4 @@
-#include "surface/one_pass_union.hpp"
+#include "surface/one_pass/one_pass_union.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"

@@ -52,6 +52,17 @@ struct Projection {
 };
 Projection face_projection(const Vec3& a, const Vec3& b, const Vec3& c);
 
+// Where a point lies in the closed triangle, from its signs against the triangle's edges
+// (s[k] against edge k, from corner k to k + 1): false when one is negative; zeros on edges
+// k - 1 and k put it at corner k.
+bool locate_from_signs(const std::array<int, 3>& s, Location& where);
+
+// The crossing of the line through p and q, which lie strictly on opposite sides of the
+// plane of triangle t, located in the closed triangle (false: it misses t). Exact, before
+// any point is constructed: the line passes each edge on the side orient3d(p, q, edge)
+// gives, and meets t iff no two edges see it on opposite sides.
+bool locate_crossing(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t, Location& where);
+
 PairIntersection intersect_faces(const Operands& operands, std::uint32_t face_a, std::uint32_t face_b);
 
 }  // namespace molsurf::boolean_engine

@@ -1,7 +1,7 @@
 #include <omp.h>
 
 #include "surface/atom_polyhedra.hpp"
-#include "surface/one_pass_union.hpp"
+#include "surface/one_pass/one_pass_union.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -2,18 +2,21 @@
 // The union of all atoms' polyhedra in one pass (the default surface method). The boundary
 // of a union of solids is the union, over the solids, of each one's boundary minus the
 // interiors of all the others; the polyhedra are convex, so every face of every atom is
-// settled on its own, against only the neighbours that can reach it:
-//   cull      (§2.2.1) inside a neighbour: dropped; reached by none: kept whole;
-//   intersect (§2.2.2) traces of the neighbours' faces on it, by exact signed volumes;
-//                      points are implicit (edge x plane, or three planes where two
-//                      neighbours' traces cross) and compared by exact value;
-//   split     (§2.3)   re-triangulated in its plane, constrained to the traces, each trace
-//                      split at every point of the face on it (a neighbour's vertex that
-//                      only touches the face splits it too: the face across the trace
-//                      sees the same vertex on the same trace);
-//   classify  (§2.4)   a piece is kept iff it lies outside every neighbour: by convexity, a
-//                      piece is inside a neighbour iff its three corners are;
-//   join               pieces of all atoms meet at exactly equal points: one closed
+// settled on its own, against only the neighbours that can reach it. The steps, one file
+// each in this folder (atom_trimmer.hpp runs the first four face by face, trim.cpp):
+//   cull      (§2.2.1, cull.cpp) inside a neighbour: dropped; reached by none: kept whole;
+//   intersect (§2.2.2, intersect.cpp) traces of the neighbours' faces on it, by exact
+//                      signed volumes; points are implicit (edge x plane, or three planes
+//                      where two neighbours' traces cross; point_definition.hpp) and
+//                      compared by exact value;
+//   split     (§2.3, split_classify.cpp) re-triangulated in its plane, constrained to the
+//                      traces, each trace split at every point of the face on it (a
+//                      neighbour's vertex that only touches the face splits it too: the face
+//                      across the trace sees the same vertex on the same trace);
+//   classify  (§2.4, split_classify.cpp) a piece is kept iff it lies outside every
+//                      neighbour: by convexity, a piece is inside a neighbour iff its three
+//                      corners are;
+//   join      (join.cpp) pieces of all atoms meet at exactly equal points: one closed
 //                      surface, cavities included, rounded only after every decision.
 // Ties follow one rule: identical atoms keep the lowest index, and where a face of one
 // atom lies in the plane of another's with the same orientation, the lower index keeps
