@@ -46,16 +46,12 @@ struct SpherePlan {
 };
 SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& options);
 
-// The solvent-accessible surface: the union of all atoms' spheres. By default in one pass
-// (src/surface/one_pass_union.hpp); if that result is not closed (never seen; it would be
-// a bug), the pairwise method is run instead and `fallback` says why. The pairwise method:
-// hierarchical pairwise mesh union. The merge tree is a k-d tree over the atom centres: each node's atoms are
-// split by a plane across their longest extent, so two merged halves meet only in a slab
-// around that plane, and a merge costs in proportion to that slab (the Boolean only works
-// on faces in the overlap of the operands' boxes). Each level of the tree joins
-// consecutive pairs of the level below, the merges of a level in parallel (OpenMP), and a
-// merge frees its operands. Spheres are built when their first merge runs. The result
-// does not depend on the number of threads.
+// The solvent-accessible surface: the union of all atoms' spheres, by the method asked
+// for: in one pass (src/surface/one_pass/), or by the hierarchical pairwise mesh union along
+// a k-d tree of the atoms (src/surface/pairwise_union.hpp). Either result does not depend
+// on the number of threads. A one-pass result that is not closed (never seen; it would be
+// a bug) is returned as it is, with one_pass.open_edges above 0: the fallback to the
+// pairwise method is compute_surface's decision (compute_surface.hpp).
 // How the spheres are joined. Both give the same surface up to its triangulation (area and
 // volume agree to rounding; tests/test_surface_methods.cpp).
 enum class SurfaceMethod {
@@ -131,8 +127,6 @@ struct OnePassStats {
 struct SurfaceResult {
   Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
   SurfaceMethod method = SurfaceMethod::one_pass;  // the method that made `mesh`
-  // Why the one-pass result was replaced by the pairwise one (empty: it was not).
-  std::string fallback;
   OnePassStats one_pass;
   std::size_t merges = 0, levels = 0;
   std::vector<SurfaceLevel> level_stats;  // bottom (sphere pairs) first

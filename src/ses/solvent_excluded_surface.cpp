@@ -16,6 +16,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "ses/excluded_core.hpp"
 #include "ses/probe_sweep.hpp"
+#include "surface/one_pass/one_pass_union.hpp"
 
 namespace molsurf::ses_detail {
 
@@ -142,7 +143,8 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
   sweep_options.spheres.probe = 0;
   sweep_options.threads = threads;
   SurfaceResult sweep = solvent_accessible_surface(balls, sweep_options);
-  if (!sweep.fallback.empty()) throw std::logic_error(sweep.fallback);
+  if (sweep.one_pass.open_edges > 0)
+    throw std::logic_error(surface_detail::open_union_message(sweep.one_pass.open_edges));
   stats.sweep_faces = sweep.mesh.face_count();
   stats.seconds_sweep = seconds_since(clock);
 
@@ -183,7 +185,8 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
   sas_options.spheres = spheres;
   sas_options.threads = threads;
   SurfaceResult sas = solvent_accessible_surface(atoms, sas_options);
-  if (!sas.fallback.empty()) throw Error("solvent-excluded surface: " + sas.fallback);
+  if (sas.one_pass.open_edges > 0)
+    throw Error("solvent-excluded surface: " + surface_detail::open_union_message(sas.one_pass.open_edges));
   out.stats.sas_faces = sas.mesh.face_count();
   out.stats.seconds_sas = seconds_since(clock);
   clock = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -116,6 +117,10 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   result.stats.neighbour_pairs = neighbours.atoms.size() / 2;
   result.stats.faces_in = polyhedra.face_count();
   return result;
+}
+
+std::string open_union_message(std::size_t open_edges) {
+  return "the one-pass union left " + std::to_string(open_edges) + " open edges (a molsurf bug; please report it)";
 }
 
 }  // namespace molsurf::surface_detail

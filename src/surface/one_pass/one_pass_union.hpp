@@ -48,4 +48,8 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
                              const std::function<void(const SurfaceSizeEstimate&)>& check_size = {},
                              std::uint64_t estimate_size_above = 0, const CancelFlag* cancel = nullptr);
 
+// What a one-pass union with `open_edges` directed edges without their reverse is: a bug,
+// said as such wherever a caller stops on it or falls back.
+std::string open_union_message(std::size_t open_edges);
+
 }  // namespace molsurf::surface_detail
