@@ -2,6 +2,7 @@
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 using molsurf::check_mesh;
 using molsurf::Mesh;

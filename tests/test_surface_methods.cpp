@@ -14,6 +14,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
 #include "surface/atom_polyhedra.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 #include "surface_methods.hpp"
 
 namespace molsurf {

@@ -9,7 +9,7 @@
 //     exposed regions of the sphere, with their areas (sphere_patches.cpp);
 //  5. shells: patches that share a vertex or a whole circle, joined; area and volume per
 //     sphere, patch and shell by Stokes' and the divergence theorem (below).
-#include "molsurf/sphere_arrangement.hpp"
+#include "arrangement/sphere_arrangement.hpp"
 
 #include <algorithm>
 #include <cmath>

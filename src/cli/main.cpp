@@ -8,7 +8,7 @@
 #include "cli/commands.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
-#include "molsurf/standard_output.hpp"
+#include "io/standard_output.hpp"
 
 int main(int argc, char** argv) {
   using namespace molsurf::cli;

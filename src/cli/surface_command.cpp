@@ -22,7 +22,7 @@
 #include "molsurf/output_files.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/sasa_structure.hpp"
-#include "molsurf/standard_output.hpp"
+#include "io/standard_output.hpp"
 #include "molsurf/split_components.hpp"
 #include "molsurf/threads.hpp"
 #include "molsurf/volume_mesh.hpp"

@@ -10,13 +10,14 @@
 
 #include "geometry/point_grid.hpp"
 #include "molsurf/boolean.hpp"
-#include "molsurf/cleanup.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "ses/excluded_core.hpp"
 #include "ses/probe_sweep.hpp"
+#include "surface/cleanup.hpp"
 #include "surface/one_pass/one_pass_union.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf::ses_detail {
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "arrangement/sphere_arrangement.hpp"
 #include "molsurf/error.hpp"
 
 #include "molsurf/surface_measures.hpp"

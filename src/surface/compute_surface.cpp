@@ -1,7 +1,6 @@
 #include "molsurf/compute_surface.hpp"
 
 #include "molsurf/compute_areas.hpp"
-#include "molsurf/true_points.hpp"
 
 #include <omp.h>
 
@@ -13,7 +12,10 @@
 
 #include "common/thread_count_scope.hpp"
 #include "ses/solvent_excluded_surface.hpp"
+#include "surface/cleanup.hpp"
 #include "surface/one_pass/one_pass_union.hpp"
+#include "surface/solvent_accessible_surface.hpp"
+#include "surface/true_points.hpp"
 
 namespace molsurf {
 

@@ -1,3 +1,5 @@
+#include "surface/solvent_accessible_surface.hpp"
+
 #include <omp.h>
 
 #include <chrono>

@@ -10,6 +10,7 @@
 #include "molsurf/surface.hpp"
 #include "surface/atom_polyhedra.hpp"
 #include "surface/one_pass/atom_pieces.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf::surface_detail::one_pass {
 

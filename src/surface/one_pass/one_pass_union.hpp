@@ -30,6 +30,7 @@
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf::surface_detail {
 
