@@ -28,32 +28,6 @@ Projection face_projection(const Vec3& a, const Vec3& b, const Vec3& c) {
   throw std::invalid_argument("boolean: a degenerate (zero-area) face in an operand");
 }
 
-bool locate_from_signs(const std::array<int, 3>& s, Location& where) {
-  if (s[0] < 0 || s[1] < 0 || s[2] < 0) return false;
-  const int zeros = (s[0] == 0) + (s[1] == 0) + (s[2] == 0);
-  if (zeros == 0) {
-    where = {Where::interior, 0};
-  } else if (zeros == 1) {
-    where = {Where::edge, static_cast<std::uint8_t>(s[0] == 0 ? 0 : (s[1] == 0 ? 1 : 2))};
-  } else if (zeros == 2) {
-    // Edges i and i+1 meet at corner i+1.
-    const int nonzero = s[0] != 0 ? 0 : (s[1] != 0 ? 1 : 2);
-    where = {Where::corner, static_cast<std::uint8_t>((nonzero + 2) % 3)};
-  } else {
-    throw std::logic_error("boolean: point on all three edges of a face");
-  }
-  return true;
-}
-
-bool locate_crossing(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t, Location& where) {
-  std::array<int, 3> s;
-  for (int i = 0; i < 3; ++i) s[i] = orient3d(p, q, t[i], t[(i + 1) % 3]);
-  // Inside iff the three signs agree (or vanish); normalise to "all >= 0".
-  if (s[0] < 0 || s[1] < 0 || s[2] < 0)
-    for (int& v : s) v = -v;
-  return locate_from_signs(s, where);
-}
-
 namespace {
 
 struct Face {
