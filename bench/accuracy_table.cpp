@@ -14,10 +14,11 @@
 #include <vector>
 
 #include "molsurf/atoms.hpp"
-#include "molsurf/ball_union.hpp"
-#include "molsurf/cleanup.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
+#include "support/ball_union.hpp"
+#include "surface/cleanup.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 using namespace molsurf;
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "molsurf/cleanup.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
+#include "surface/cleanup.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <cmath>
 #include <numbers>
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 using namespace molsurf;
 int main() {
   const double pi = std::numbers::pi;

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
 
 namespace {

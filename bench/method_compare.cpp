@@ -1,7 +1,8 @@
-#include "surface/one_pass_union.hpp"
+#include "surface/one_pass/one_pass_union.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

@@ -25,7 +25,7 @@ using namespace nglib;
 #include <vector>
 
 #include "molsurf/io.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 #include "volume/tetrahedron_quality.hpp"
 
 namespace {

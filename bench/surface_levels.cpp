@@ -9,6 +9,7 @@
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

@@ -2,8 +2,8 @@
 
 #include <utility>
 
-#include "molsurf/icosphere.hpp"
-#include "molsurf/shapes.hpp"
+#include "mesh/icosphere.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf::bench {
 

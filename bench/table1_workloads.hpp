@@ -1,7 +1,7 @@
 #pragma once
 // Operand pairs for benchmarking and testing the union engine: the engineering workloads
 // of the paper's Table I (Shostko, Löhner & Sandberg 1999), rebuilt from the shapes in
-// molsurf/shapes.hpp with the same face counts, plus degenerate configurations that
+// tests/support/shapes.hpp with the same face counts, plus degenerate configurations that
 // exercise the exact coplanar / touching / coincident rules.
 //
 // Every generator is deterministic. Generic placements use offsets and angles that look

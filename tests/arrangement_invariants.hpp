@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "arrangement/sphere_arrangement.hpp"
 #include "molsurf/atoms.hpp"
-#include "molsurf/ball_union.hpp"
-#include "molsurf/sphere_arrangement.hpp"
+#include "support/ball_union.hpp"
 
 namespace molsurf::testing {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <utility>
 
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf::testing {
 

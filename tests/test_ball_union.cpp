@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "molsurf/ball_union.hpp"
+#include "support/ball_union.hpp"
 
 namespace molsurf {
 namespace {

@@ -4,12 +4,12 @@
 #include <numbers>
 
 #include "boolean_invariants.hpp"
+#include "mesh/icosphere.hpp"
 #include "mesh_fixtures.hpp"
 #include "molsurf/boolean.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

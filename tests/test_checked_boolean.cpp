@@ -9,7 +9,7 @@
 #include "cgal_check.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/compute_surface.hpp"
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 

@@ -15,7 +15,7 @@
 #include "boolean/intersect.hpp"
 #include "boolean/operands.hpp"
 #include "boolean/split.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf::boolean_engine {
 namespace {

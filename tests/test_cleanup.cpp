@@ -9,14 +9,15 @@
 #include <vector>
 
 #include "common/thread_count_scope.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/boolean.hpp"
-#include "molsurf/cleanup.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
 #include "molsurf/surface.hpp"
+#include "support/shapes.hpp"
+#include "surface/cleanup.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf {
 namespace {

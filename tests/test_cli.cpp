@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "mesh/icosphere.hpp"
 #include "mesh_fixtures.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/volume_mesh.hpp"
 

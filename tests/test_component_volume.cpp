@@ -9,7 +9,7 @@
 
 #include "mesh/component_volume.hpp"
 #include "molsurf/mesh.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

@@ -7,11 +7,12 @@
 #include "atom_fixtures.hpp"
 #include "degenerate_placements.hpp"
 #include "molsurf/atoms.hpp"
-#include "molsurf/cleanup.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
+#include "surface/cleanup.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf {
 namespace {

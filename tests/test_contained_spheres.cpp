@@ -11,6 +11,7 @@
 #include "atom_fixtures.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf {
 namespace {

@@ -12,8 +12,9 @@
 #include "degenerate_placements.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/shapes.hpp"
 #include "molsurf/surface.hpp"
+#include "support/shapes.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 #include "surface_methods.hpp"
 
 namespace molsurf {

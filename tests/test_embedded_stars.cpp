@@ -10,11 +10,12 @@
 
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/embedded_stars.hpp"
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf {
 namespace {

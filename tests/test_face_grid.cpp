@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "mesh/face_grid.hpp"
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 
 namespace molsurf {
 namespace {

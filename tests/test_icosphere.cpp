@@ -4,7 +4,7 @@
 #include <map>
 #include <numbers>
 
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 
 namespace molsurf {
 namespace {

@@ -11,12 +11,13 @@
 #include <vector>
 #include <tuple>
 
+#include "common/thread_count_scope.hpp"
 #include "molsurf/atoms.hpp"
-#include "molsurf/cleanup.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
-#include "common/thread_count_scope.hpp"
+#include "surface/cleanup.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf {
 namespace {

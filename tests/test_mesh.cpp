@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/icosphere.hpp"
 #include "mesh_fixtures.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/mesh.hpp"
 
 namespace molsurf {

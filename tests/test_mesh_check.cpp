@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "mesh/icosphere.hpp"
 #include "mesh_fixtures.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 using molsurf::check_mesh;
 using molsurf::Mesh;

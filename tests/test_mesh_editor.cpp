@@ -10,11 +10,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "mesh/icosphere.hpp"
 #include "mesh/mesh_editor.hpp"
 #include "mesh/topology.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

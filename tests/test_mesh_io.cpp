@@ -27,9 +27,9 @@
 #include <vtk-9.1/vtkStringArray.h>
 #include <vtk-9.1/vtkXMLPolyDataReader.h>
 
-#include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "common/thread_count_scope.hpp"
+#include "mesh/icosphere.hpp"
+#include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 

@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "mesh/icosphere.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 

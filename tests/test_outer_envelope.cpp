@@ -12,12 +12,12 @@
 #include "cli_runner.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/ray_parity.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/boolean.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
 #include "random_pairs.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

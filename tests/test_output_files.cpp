@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "mesh/icosphere.hpp"
 #include "mesh_fixtures.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/output_files.hpp"

@@ -7,7 +7,7 @@
 #include "geometry/implicit_point.hpp"
 #include "geometry/predicates.hpp"
 #include "surface/atom_polyhedra.hpp"
-#include "surface/point_definition.hpp"
+#include "surface/one_pass/point_definition.hpp"
 
 namespace molsurf::surface_detail {
 namespace {

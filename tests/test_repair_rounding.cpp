@@ -9,7 +9,7 @@
 
 #include "boolean/repair_rounding.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf::boolean_engine {
 namespace {

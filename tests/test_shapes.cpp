@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

@@ -7,10 +7,10 @@
 #include <random>
 #include <set>
 
+#include "arrangement/sphere_arrangement.hpp"
 #include "arrangement_invariants.hpp"
 #include "degenerate_placements.hpp"
-#include "molsurf/ball_union.hpp"
-#include "molsurf/sphere_arrangement.hpp"
+#include "support/ball_union.hpp"
 
 namespace molsurf {
 namespace {

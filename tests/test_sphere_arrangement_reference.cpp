@@ -31,8 +31,8 @@
 #include <string>
 #include <vector>
 
-#include "molsurf/ball_union.hpp"
-#include "molsurf/sphere_arrangement.hpp"
+#include "arrangement/sphere_arrangement.hpp"
+#include "support/ball_union.hpp"
 
 namespace molsurf {
 namespace {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/split_components.hpp"

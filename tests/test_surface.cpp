@@ -4,15 +4,16 @@
 #include <numbers>
 #include <numeric>
 
-#include "boolean_invariants.hpp"
 #include "atom_fixtures.hpp"
+#include "boolean_invariants.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/atoms.hpp"
-#include "molsurf/ball_union.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
+#include "support/ball_union.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf {
 namespace {

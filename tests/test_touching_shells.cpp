@@ -12,13 +12,13 @@
 
 #include "atom_fixtures.hpp"
 #include "cli_runner.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/boolean.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh_check.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

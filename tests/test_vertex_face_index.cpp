@@ -8,7 +8,7 @@
 
 #include "mesh/topology.hpp"
 #include "mesh/vertex_face_index.hpp"
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 namespace molsurf {
 namespace {

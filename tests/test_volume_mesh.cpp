@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "mesh/icosphere.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/volume_mesh.hpp"
 #include "volume/volume_mesh_size.hpp"

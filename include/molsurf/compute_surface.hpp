@@ -19,15 +19,16 @@
 #include <vector>
 
 #include "molsurf/atoms.hpp"
+#include "molsurf/cancel.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/sphere_arrangement.hpp"
-#include "molsurf/true_points.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
+#include "molsurf/true_points.hpp"
 
 namespace molsurf {
 

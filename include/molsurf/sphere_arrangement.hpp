@@ -4,7 +4,8 @@
 // bound its exposed part, the vertices where three spheres meet on the surface, and the
 // exposed spherical patches; the patches joined into shells (the outer surface and each
 // cavity). Areas and volumes follow analytically (Stokes' theorem on the sphere and the
-// divergence theorem), to floating-point rounding.
+// divergence theorem), to floating-point rounding. These are the result's types:
+// compute_areas.hpp computes it for atoms (the algorithm: src/arrangement/).
 //
 // For the solvent-accessible surface the spheres are the atoms' r_vdW + probe: a vertex is
 // then a probe position touching three atoms, and an arc the path of a probe rolling on
@@ -21,7 +22,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "molsurf/vec3.hpp"
@@ -81,14 +81,5 @@ struct SphereArrangement {
   double area = 0, volume = 0;               // volume: of the union, cavities excluded
   ArrangementStats stats;
 };
-
-struct ArrangementOptions {
-  int threads = 0;  // 0: OpenMP's default
-};
-
-// Throws std::invalid_argument when the spans differ in length or a radius or coordinate is
-// not finite or a radius is negative. Spheres of radius 0 are buried.
-SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const double> radii,
-                                  const ArrangementOptions& options = {});
 
 }  // namespace molsurf

@@ -1,16 +1,14 @@
 #pragma once
-// Atoms to spheres: each atom becomes an icosphere of radius r_vdW + probe.
+// Atoms to spheres: each atom becomes an icosphere of radius r_vdW + probe; how the spheres
+// are joined (the union itself is src/surface/solvent_accessible_surface.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <map>
-#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
 
-#include "molsurf/cancel.hpp"
 #include "molsurf/atoms.hpp"
-#include "molsurf/boolean.hpp"
 #include "molsurf/mesh.hpp"
 
 namespace molsurf {
@@ -47,16 +45,6 @@ struct SpherePlan {
 };
 SpherePlan plan_spheres(std::span<const Atom> atoms, const SphereOptions& options);
 
-// The solvent-accessible surface: the union of all atoms' spheres. By default in one pass
-// (src/surface/one_pass_union.hpp); if that result is not closed (never seen; it would be
-// a bug), the pairwise method is run instead and `fallback` says why. The pairwise method:
-// hierarchical pairwise mesh union. The merge tree is a k-d tree over the atom centres: each node's atoms are
-// split by a plane across their longest extent, so two merged halves meet only in a slab
-// around that plane, and a merge costs in proportion to that slab (the Boolean only works
-// on faces in the overlap of the operands' boxes). Each level of the tree joins
-// consecutive pairs of the level below, the merges of a level in parallel (OpenMP), and a
-// merge frees its operands. Spheres are built when their first merge runs. The result
-// does not depend on the number of threads.
 // How the spheres are joined. Both give the same surface up to its triangulation (area and
 // volume agree to rounding; tests/test_surface_methods.cpp).
 enum class SurfaceMethod {
@@ -67,7 +55,7 @@ inline constexpr std::string_view kSurfaceMethodNames[] = {"one-pass", "pairwise
 const char* surface_method_name(SurfaceMethod method);
 
 // The union's size before it is computed, from a sample of atoms trimmed on their own
-// (the one-pass method; SurfaceOptions::check_size). bytes: the whole job's peak memory,
+// (the one-pass method; ComputeSurfaceOptions::max_memory). bytes: the whole job's peak memory,
 // faces x kBytesPerSurfaceFace (resource_limits.hpp).
 struct SurfaceSizeEstimate {
   std::uint64_t faces = 0;  // of the union before cleanup, extrapolated from the sample
@@ -75,75 +63,5 @@ struct SurfaceSizeEstimate {
   std::size_t sampled_atoms = 0;
   std::size_t atoms = 0;
 };
-
-struct SurfaceOptions {
-  SphereOptions spheres;
-  SurfaceMethod method = SurfaceMethod::one_pass;
-  int threads = 0;  // 0: all cores
-  // Called from one thread as the work advances: (atoms trimmed, atoms) for the one-pass
-  // method, (merges done, merges in all) after each level for the pairwise one; may be empty.
-  std::function<void(std::size_t, std::size_t)> progress;
-  // Called once by the one-pass method before its pass, when the spheres have more than
-  // `estimate_size_above` faces, with the union's size estimated from a sample of atoms
-  // trimmed on their own (a fraction of a percent of the pass); it may throw to stop the
-  // job before the memory is spent. May be empty.
-  std::function<void(const SurfaceSizeEstimate&)> check_size;
-  std::uint64_t estimate_size_above = 0;
-  // Set from another thread to stop the union (cancel.hpp): read per atom in the one-pass
-  // trim and per merge in the pairwise union. May be null.
-  const CancelFlag* cancel = nullptr;
-};
-
-struct SurfaceTimings {  // seconds
-  double union_levels = 0;  // the whole union, either method
-  double subtrees = 0;      // of union_levels: the subtrees below SurfaceResult::subtree_height
-};
-
-// One level of the merge tree: where the time goes (step times are summed over the
-// level's merges, so they are CPU seconds when merges run in parallel).
-struct SurfaceLevel {
-  std::size_t merges = 0;
-  std::size_t faces_in = 0, active_faces = 0, faces_out = 0;
-  std::size_t split_faces = 0, ray_casts = 0, whole_reruns = 0;
-  BooleanTimings steps;
-  // Wall time of the level; for the levels merged inside subtrees (below
-  // SurfaceResult::subtree_height), the summed durations of their merges instead.
-  double seconds = 0;
-
-  // The merge's counts and step times added in (one more merge); levels add up likewise.
-  SurfaceLevel& operator+=(const BooleanStats& merge);
-  SurfaceLevel& operator+=(const SurfaceLevel& other);
-};
-
-// The one-pass method's counts: where the faces of all polyhedra went.
-struct OnePassStats {
-  // contained_atoms: atoms inside another atom's ball (copies, concentric smaller ones),
-  // left out of the union.
-  std::size_t atoms = 0, contained_atoms = 0, neighbour_pairs = 0;
-  std::size_t faces_in = 0;       // all polyhedra's faces
-  std::size_t faces_inside = 0;   // dropped whole (inside a neighbour)
-  std::size_t faces_whole = 0;    // kept whole (reached by no neighbour)
-  std::size_t faces_cut = 0;      // re-triangulated
-  std::size_t crossings = 0;      // three-plane points (two traces crossing inside a face)
-  std::size_t merged_points = 0;  // equal points with different definitions, merged by value
-  std::size_t open_edges = 0;     // directed edges without a reverse after the join (0: closed)
-  double seconds_trim = 0, seconds_join = 0;
-};
-
-struct SurfaceResult {
-  Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
-  SurfaceMethod method = SurfaceMethod::one_pass;  // the method that made `mesh`
-  // Why the one-pass result was replaced by the pairwise one (empty: it was not).
-  std::string fallback;
-  OnePassStats one_pass;
-  std::size_t merges = 0, levels = 0;
-  std::vector<SurfaceLevel> level_stats;  // bottom (sphere pairs) first
-  // Levels below this height were merged subtree by subtree (each depth first, one per
-  // thread); the ones above level by level.
-  std::size_t subtree_height = 0;
-  SurfaceTimings seconds;
-};
-
-SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options);
 
 }  // namespace molsurf

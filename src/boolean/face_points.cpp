@@ -46,6 +46,25 @@ void sort_along_segment(std::vector<std::uint32_t>& ids, const Vec3& from, const
   });
 }
 
+void FaceToSplit::add_edge(int k, std::uint32_t from, std::uint32_t to, std::vector<std::uint32_t>& inside,
+                           const Vec3& a, const Vec3& b, std::span<const ImplicitPoint> points) {
+  sort_along_segment(inside, a, b, points);
+  std::vector<std::uint32_t>& run = edge_runs[k];
+  run.clear();
+  run.push_back(from);
+  run.insert(run.end(), inside.begin(), inside.end());
+  run.push_back(to);
+  boundary.push_back(from);
+  boundary.insert(boundary.end(), inside.begin(), inside.end());
+}
+
+bool FaceToSplit::on_one_edge(std::uint32_t s, std::uint32_t t) const {
+  for (const auto& run : edge_runs)
+    if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
+      return true;
+  return false;
+}
+
 FacePoints::FacePoints(std::vector<std::uint32_t> ids, std::span<const ImplicitPoint> all, Projection projection)
     : ids_(std::move(ids)),
       all_(all),

@@ -26,6 +26,16 @@ struct FaceToSplit {
   // without arithmetic (their exact evaluation is the expensive case of the filter).
   std::vector<std::vector<std::uint32_t>> collinear_sets;
   Projection projection;
+  // Each edge's points from its first corner to its second, corners included.
+  std::array<std::vector<std::uint32_t>, 3> edge_runs;
+
+  // Edge k, from the point `from` (corner k) to `to`, with the points strictly inside it
+  // (`inside`, sorted here exactly along the edge from a to b): its run, and its part of
+  // the boundary. The edges are added in order, 0 to 2.
+  void add_edge(int k, std::uint32_t from, std::uint32_t to, std::vector<std::uint32_t>& inside, const Vec3& a,
+                const Vec3& b, std::span<const geometry::ImplicitPoint> points);
+  // s and t lie on one edge: a segment between them runs along the boundary (no constraint).
+  bool on_one_edge(std::uint32_t s, std::uint32_t t) const;
 };
 
 // The points of one face with exact predicates in its projection: the interval filter

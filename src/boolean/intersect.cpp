@@ -46,39 +46,11 @@ int orient2d_projected(const Vec3& a, const Vec3& b, const Vec3& c, const Projec
   return orient2d(a[pr.u], a[pr.v], b[pr.u], b[pr.v], c[pr.u], c[pr.v]);
 }
 
-// Location from three signs that must all be >= 0 for "inside" (one per edge i, the sign
-// of the point against edge i). nullopt-like: returns false when outside.
-bool locate_from_signs(const int s[3], Location& where) {
-  if (s[0] < 0 || s[1] < 0 || s[2] < 0) return false;
-  const int zeros = (s[0] == 0) + (s[1] == 0) + (s[2] == 0);
-  if (zeros == 0) {
-    where = {Where::interior, 0};
-  } else if (zeros == 1) {
-    where = {Where::edge, static_cast<std::uint8_t>(s[0] == 0 ? 0 : (s[1] == 0 ? 1 : 2))};
-  } else if (zeros == 2) {
-    // Edges i and i+1 meet at corner i+1.
-    const int nonzero = s[0] != 0 ? 0 : (s[1] != 0 ? 1 : 2);
-    where = {Where::corner, static_cast<std::uint8_t>((nonzero + 2) % 3)};
-  } else {
-    throw std::logic_error("boolean: point on all three edges of a face");
-  }
-  return true;
-}
-
 // A point in the plane of triangle t (exactly), located in the closed triangle.
 bool locate_in_plane(const Vec3& x, const Face& t, const Projection& pr, Location& where) {
-  const int s[3] = {orient2d_projected(t.p[0], t.p[1], x, pr), orient2d_projected(t.p[1], t.p[2], x, pr),
-                    orient2d_projected(t.p[2], t.p[0], x, pr)};
-  return locate_from_signs(s, where);
-}
-
-// The crossing of line pq (p, q strictly on opposite sides of t's plane) located in t.
-bool locate_crossing(const Vec3& p, const Vec3& q, const Face& t, Location& where) {
-  int s[3];
-  for (int i = 0; i < 3; ++i) s[i] = orient3d(p, q, t.p[i], t.p[(i + 1) % 3]);
-  // Inside iff the three signs agree (or vanish); normalise to "all >= 0".
-  if (s[0] < 0 || s[1] < 0 || s[2] < 0)
-    for (int& v : s) v = -v;
+  const std::array<int, 3> s = {orient2d_projected(t.p[0], t.p[1], x, pr),
+                                orient2d_projected(t.p[1], t.p[2], x, pr),
+                                orient2d_projected(t.p[2], t.p[0], x, pr)};
   return locate_from_signs(s, where);
 }
 
@@ -152,7 +124,7 @@ void collect_crossings(PairBuilder& out, int self_operand, const Face& self, con
     const int j = (i + 1) % 3;
     if (side[i] * side[j] < 0) {
       Location where;
-      if (locate_crossing(self.p[i], self.p[j], other, where)) {
+      if (locate_crossing(self.p[i], self.p[j], other.p, where)) {
         const PointKey key = edge_point_key(self.edge[i], self_operand, where, other, other_face);
         emit(key, {Where::edge, static_cast<std::uint8_t>(i)}, where);
       }
@@ -168,7 +140,7 @@ void collect_coplanar(PairBuilder& out, const Face& a, const Face& b, std::uint3
   (void)fb;
   // Orientation tests in a's projection; b may be clockwise there (opposite normal).
   auto locate = [&](const Vec3& x, const Face& t, Location& where) {
-    int s[3];
+    std::array<int, 3> s;
     for (int i = 0; i < 3; ++i) s[i] = orient2d_projected(t.p[i], t.p[(i + 1) % 3], x, pr);
     if (orient2d_projected(t.p[0], t.p[1], t.p[2], pr) < 0)
       for (int& v : s) v = -v;

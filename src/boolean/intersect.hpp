@@ -6,11 +6,13 @@
 // as what they are and keyed by the elements they lie on.
 #include <array>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "boolean/operands.hpp"
 #include "boolean/point_key.hpp"
+#include "geometry/predicates.hpp"
 
 namespace molsurf::boolean_engine {
 
@@ -51,6 +53,39 @@ struct Projection {
   int u = 0, v = 1;
 };
 Projection face_projection(const Vec3& a, const Vec3& b, const Vec3& c);
+
+// Where a point lies in the closed triangle, from its signs against the triangle's edges
+// (s[k] against edge k, from corner k to k + 1): false when one is negative; zeros on edges
+// k - 1 and k put it at corner k.
+inline bool locate_from_signs(const std::array<int, 3>& s, Location& where) {
+  if (s[0] < 0 || s[1] < 0 || s[2] < 0) return false;
+  const int zeros = (s[0] == 0) + (s[1] == 0) + (s[2] == 0);
+  if (zeros == 0) {
+    where = {Where::interior, 0};
+  } else if (zeros == 1) {
+    where = {Where::edge, static_cast<std::uint8_t>(s[0] == 0 ? 0 : (s[1] == 0 ? 1 : 2))};
+  } else if (zeros == 2) {
+    // Edges i and i+1 meet at corner i+1.
+    const int nonzero = s[0] != 0 ? 0 : (s[1] != 0 ? 1 : 2);
+    where = {Where::corner, static_cast<std::uint8_t>((nonzero + 2) % 3)};
+  } else {
+    throw std::logic_error("boolean: point on all three edges of a face");
+  }
+  return true;
+}
+
+// The crossing of the line through p and q, which lie strictly on opposite sides of the
+// plane of triangle t, located in the closed triangle (false: it misses t). Exact, before
+// any point is constructed: the line passes each edge on the side orient3d(p, q, edge)
+// gives, and meets t iff no two edges see it on opposite sides.
+inline bool locate_crossing(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t, Location& where) {
+  std::array<int, 3> s;
+  for (int i = 0; i < 3; ++i) s[i] = geometry::orient3d(p, q, t[i], t[(i + 1) % 3]);
+  // Inside iff the three signs agree (or vanish); normalise to "all >= 0".
+  if (s[0] < 0 || s[1] < 0 || s[2] < 0)
+    for (int& v : s) v = -v;
+  return locate_from_signs(s, where);
+}
 
 PairIntersection intersect_faces(const Operands& operands, std::uint32_t face_a, std::uint32_t face_b);
 

@@ -98,30 +98,20 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
   const auto& corners = ops.face(f);
   FaceToSplit face;
   face.projection = face_projection(ops.vertex(corners[0]), ops.vertex(corners[1]), ops.vertex(corners[2]));
-  std::vector<std::uint32_t> edge_run[3];  // each edge's points from its first corner to its second, corners included
   for (int i = 0; i < 3; ++i) {
     const std::uint32_t from = corners[i], to = corners[(i + 1) % 3];
     std::vector<std::uint32_t> inside = arr.edge_points[ops.face_edges(f)[i]];
-    sort_along_segment(inside, ops.vertex(from), ops.vertex(to), arr.points);
-    edge_run[i].push_back(arr.vertex_point[from]);
-    edge_run[i].insert(edge_run[i].end(), inside.begin(), inside.end());
-    edge_run[i].push_back(arr.vertex_point[to]);
-    face.boundary.push_back(arr.vertex_point[from]);
-    face.boundary.insert(face.boundary.end(), inside.begin(), inside.end());
+    face.add_edge(i, arr.vertex_point[from], arr.vertex_point[to], inside, ops.vertex(from), ops.vertex(to),
+                  arr.points);
   }
   face.interior = arr.face_points[f];
   if (face.interior.empty()) {
     // Chords only: pieces are the segments themselves (no boundary point lies inside a
     // chord), and segments on the boundary are no constraints.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> chords;
-    for (auto [s, t] : arr.face_segments[f]) {
-      bool on_boundary = false;
-      for (const auto& run : edge_run)
-        if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
-          on_boundary = true;
-      if (!on_boundary) chords.emplace_back(s, t);
-    }
-    if (auto triangles = triangulate_chords(face.boundary, edge_run, chords, arr.points, face.projection)) {
+    for (auto [s, t] : arr.face_segments[f])
+      if (!face.on_one_edge(s, t)) chords.emplace_back(s, t);
+    if (auto triangles = triangulate_chords(face.boundary, face.edge_runs, chords, arr.points, face.projection)) {
       out.curve_pieces = arr.face_segments[f];
       for (const auto& tri : *triangles) out.sub_faces.push_back({tri, f});
       find_opposite_sides(out, arr.transversal_segments[f]);
@@ -131,7 +121,7 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
   std::vector<std::uint32_t> ids = face.boundary;
   ids.insert(ids.end(), face.interior.begin(), face.interior.end());
   const FacePoints points(std::move(ids), arr.points, face.projection);
-  for (const auto& run : edge_run) face.collinear_sets.push_back(run);
+  for (const auto& run : face.edge_runs) face.collinear_sets.push_back(run);
   const std::size_t first_line = face.collinear_sets.size();
   const auto& segments = arr.face_segments[f];
   const auto pieces = split_segments_at_points(segments, points, face.collinear_sets);
@@ -150,11 +140,7 @@ FaceSplit split_one_face(const Operands& ops, const Arrangement& arr, std::uint3
     }
   for (auto [s, t] : pieces) {
     out.curve_pieces.emplace_back(s, t);
-    bool on_boundary = false;
-    for (const auto& run : edge_run)
-      if (std::find(run.begin(), run.end(), s) != run.end() && std::find(run.begin(), run.end(), t) != run.end())
-        on_boundary = true;
-    if (!on_boundary) face.constraints.emplace_back(s, t);
+    if (!face.on_one_edge(s, t)) face.constraints.emplace_back(s, t);
   }
   auto triangles = triangulate_polylines(face, points);
   if (!triangles) triangles = retriangulate_face(face, points);

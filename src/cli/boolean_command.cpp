@@ -10,7 +10,7 @@
 #include "molsurf/parameters.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/report.hpp"
-#include "molsurf/standard_output.hpp"
+#include "io/standard_output.hpp"
 #include "molsurf/written_check.hpp"
 #include "cli/validators.hpp"
 

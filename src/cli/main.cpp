@@ -9,8 +9,8 @@
 #include "cli/validators.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
+#include "io/standard_output.hpp"
 #include "molsurf/parameters.hpp"
-#include "molsurf/standard_output.hpp"
 
 int main(int argc, char** argv) {
   using namespace molsurf::cli;

@@ -21,7 +21,7 @@
 #include "molsurf/parameters.hpp"
 #include "molsurf/report.hpp"
 #include "molsurf/resource_limits.hpp"
-#include "molsurf/standard_output.hpp"
+#include "io/standard_output.hpp"
 #include "molsurf/surface_files.hpp"
 #include "molsurf/surface_report.hpp"
 #include "molsurf/threads.hpp"

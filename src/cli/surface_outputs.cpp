@@ -9,7 +9,7 @@
 #include "molsurf/report.hpp"
 #include "molsurf/sasa_structure.hpp"
 #include "molsurf/split_components.hpp"
-#include "molsurf/standard_output.hpp"
+#include "io/standard_output.hpp"
 
 namespace molsurf::cli {
 

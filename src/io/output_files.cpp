@@ -8,9 +8,9 @@
 
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
+#include "io/standard_output.hpp"
 #include "io/temporary_registry.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/standard_output.hpp"
 
 namespace molsurf {
 

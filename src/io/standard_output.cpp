@@ -1,4 +1,4 @@
-#include "molsurf/standard_output.hpp"
+#include "io/standard_output.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,12 +10,14 @@
 
 #include "geometry/point_grid.hpp"
 #include "molsurf/boolean.hpp"
-#include "molsurf/cleanup.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "ses/excluded_core.hpp"
 #include "ses/probe_sweep.hpp"
+#include "surface/cleanup.hpp"
+#include "surface/one_pass/one_pass_union.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf::ses_detail {
 
@@ -142,7 +144,8 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
   sweep_options.spheres.probe = 0;
   sweep_options.threads = threads;
   SurfaceResult sweep = solvent_accessible_surface(balls, sweep_options);
-  if (!sweep.fallback.empty()) throw std::logic_error(sweep.fallback);
+  if (sweep.one_pass.open_edges > 0)
+    throw std::logic_error(surface_detail::open_union_message(sweep.one_pass.open_edges));
   stats.sweep_faces = sweep.mesh.face_count();
   stats.seconds_sweep = seconds_since(clock);
 
@@ -183,7 +186,8 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
   sas_options.spheres = spheres;
   sas_options.threads = threads;
   SurfaceResult sas = solvent_accessible_surface(atoms, sas_options);
-  if (!sas.fallback.empty()) throw Error("solvent-excluded surface: " + sas.fallback);
+  if (sas.one_pass.open_edges > 0)
+    throw Error("solvent-excluded surface: " + surface_detail::open_union_message(sas.one_pass.open_edges));
   out.stats.sas_faces = sas.mesh.face_count();
   out.stats.seconds_sas = seconds_since(clock);
   clock = std::chrono::steady_clock::now();

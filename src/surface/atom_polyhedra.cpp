@@ -10,7 +10,7 @@
 #include "arrangement/contained_spheres.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "geometry/point_grid.hpp"
-#include "molsurf/icosphere.hpp"
+#include "mesh/icosphere.hpp"
 
 namespace molsurf::surface_detail {
 

@@ -1,4 +1,4 @@
-#include "molsurf/cleanup.hpp"
+#include "surface/cleanup.hpp"
 
 #include <algorithm>
 #include <array>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "arrangement/sphere_arrangement.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/input_checks.hpp"
 #include "molsurf/parameters.hpp"

@@ -1,7 +1,6 @@
 #include "molsurf/compute_surface.hpp"
 
 #include "molsurf/compute_areas.hpp"
-#include "molsurf/true_points.hpp"
 #include "molsurf/parameters.hpp"
 
 #include <omp.h>
@@ -14,6 +13,10 @@
 
 #include "common/thread_count_scope.hpp"
 #include "ses/solvent_excluded_surface.hpp"
+#include "surface/cleanup.hpp"
+#include "surface/one_pass/one_pass_union.hpp"
+#include "surface/solvent_accessible_surface.hpp"
+#include "surface/true_points.hpp"
 
 namespace molsurf {
 
@@ -34,6 +37,8 @@ std::string check_failure_message(const MeshCheck& check) {
 struct Attempt {
   Mesh mesh;
   SurfaceMethod method = SurfaceMethod::one_pass;
+  // A one-pass union that is not closed is neither cleaned nor checked: why (empty: it is closed).
+  std::string open;
   MeshCheck check;
   std::optional<CleanupStats> cleanup;
   std::optional<TruePointStats> true_points;
@@ -73,8 +78,12 @@ class Pipeline {
     } else {
       SurfaceResult sas = method == SurfaceMethod::pairwise ? pairwise_union(surface_options)
                                                             : solvent_accessible_surface(atoms_, surface_options);
-      if (!sas.fallback.empty()) notes_.push_back(sas.fallback);
       attempt.method = sas.method;
+      if (sas.one_pass.open_edges > 0) {
+        attempt.open = surface_detail::open_union_message(sas.one_pass.open_edges);
+        seconds_.union_ += seconds_since(clock);
+        return attempt;
+      }
       attempt.mesh = options_.outer_only ? outer_surface_only(sas.mesh) : std::move(sas.mesh);
     }
     seconds_.union_ += seconds_since(clock);
@@ -220,11 +229,15 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   const ThreadCountScope thread_count(result.threads);
   const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
 
+  // The one place that falls back to the pairwise union (the reference method): for a
+  // one-pass union that is not closed (never seen: a bug), and for a one-pass surface that
+  // fails its check (rounded to doubles it can fail where the pairwise one, which repairs
+  // rounding between merges, does not).
   Attempt attempt = pipeline.run(options.method);
-  if (!attempt.check.valid() && attempt.method == SurfaceMethod::one_pass && options.surface == SurfaceKind::sas) {
-    // The one-pass surface rounded to doubles can fail where the pairwise one, which
-    // repairs rounding between merges, does not: the reference method is the fallback.
-    result.notes.push_back("the one-pass surface failed its check; using the pairwise union");
+  if (attempt.method == SurfaceMethod::one_pass && options.surface == SurfaceKind::sas &&
+      (!attempt.open.empty() || !attempt.check.valid())) {
+    result.notes.push_back(!attempt.open.empty() ? attempt.open + ": the pairwise union was used"
+                                                 : "the one-pass surface failed its check; using the pairwise union");
     attempt = pipeline.run(SurfaceMethod::pairwise);
   }
   // The promise is a valid surface or none.

@@ -4,6 +4,7 @@
 #include <exception>
 #include <stdexcept>
 
+#include "arrangement/sphere_arrangement.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/surface_report.hpp"

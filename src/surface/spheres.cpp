@@ -10,8 +10,8 @@
 #include <unistd.h>
 
 #include "common/size_text.hpp"
+#include "mesh/icosphere.hpp"
 #include "molsurf/error.hpp"
-#include "molsurf/icosphere.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 

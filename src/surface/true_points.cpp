@@ -1,4 +1,4 @@
-#include "molsurf/true_points.hpp"
+#include "surface/true_points.hpp"
 
 #include <algorithm>
 #include <chrono>

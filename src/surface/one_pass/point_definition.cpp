@@ -1,4 +1,4 @@
-#include "surface/point_definition.hpp"
+#include "surface/one_pass/point_definition.hpp"
 
 #include <algorithm>
 #include <utility>

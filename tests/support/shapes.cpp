@@ -1,4 +1,4 @@
-#include "molsurf/shapes.hpp"
+#include "support/shapes.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "molsurf/ball_union.hpp"
+#include "support/ball_union.hpp"
 
 #include <algorithm>
 #include <array>

@@ -2,18 +2,21 @@
 // The union of all atoms' polyhedra in one pass (the default surface method). The boundary
 // of a union of solids is the union, over the solids, of each one's boundary minus the
 // interiors of all the others; the polyhedra are convex, so every face of every atom is
-// settled on its own, against only the neighbours that can reach it:
-//   cull      (§2.2.1) inside a neighbour: dropped; reached by none: kept whole;
-//   intersect (§2.2.2) traces of the neighbours' faces on it, by exact signed volumes;
-//                      points are implicit (edge x plane, or three planes where two
-//                      neighbours' traces cross) and compared by exact value;
-//   split     (§2.3)   re-triangulated in its plane, constrained to the traces, each trace
-//                      split at every point of the face on it (a neighbour's vertex that
-//                      only touches the face splits it too: the face across the trace
-//                      sees the same vertex on the same trace);
-//   classify  (§2.4)   a piece is kept iff it lies outside every neighbour: by convexity, a
-//                      piece is inside a neighbour iff its three corners are;
-//   join               pieces of all atoms meet at exactly equal points: one closed
+// settled on its own, against only the neighbours that can reach it. The steps, one file
+// each in this folder (atom_trimmer.hpp runs the first four face by face, trim.cpp):
+//   cull      (§2.2.1, cull.cpp) inside a neighbour: dropped; reached by none: kept whole;
+//   intersect (§2.2.2, intersect.cpp) traces of the neighbours' faces on it, by exact
+//                      signed volumes; points are implicit (edge x plane, or three planes
+//                      where two neighbours' traces cross; point_definition.hpp) and
+//                      compared by exact value;
+//   split     (§2.3, split_classify.cpp) re-triangulated in its plane, constrained to the
+//                      traces, each trace split at every point of the face on it (a
+//                      neighbour's vertex that only touches the face splits it too: the face
+//                      across the trace sees the same vertex on the same trace);
+//   classify  (§2.4, split_classify.cpp) a piece is kept iff it lies outside every
+//                      neighbour: by convexity, a piece is inside a neighbour iff its three
+//                      corners are;
+//   join      (join.cpp) pieces of all atoms meet at exactly equal points: one closed
 //                      surface, cavities included, rounded only after every decision.
 // Ties follow one rule: identical atoms keep the lowest index, and where a face of one
 // atom lies in the plane of another's with the same orientation, the lower index keeps
@@ -27,6 +30,7 @@
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf::surface_detail {
 
@@ -44,5 +48,9 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
                              const std::function<void(std::size_t, std::size_t)>& progress = {},
                              const std::function<void(const SurfaceSizeEstimate&)>& check_size = {},
                              std::uint64_t estimate_size_above = 0, const CancelFlag* cancel = nullptr);
+
+// What a one-pass union with `open_edges` directed edges without their reverse is: a bug,
+// said as such wherever a caller stops on it or falls back.
+std::string open_union_message(std::size_t open_edges);
 
 }  // namespace molsurf::surface_detail
