@@ -125,9 +125,9 @@ class Pipeline {
   }
 
   // The pairwise union could stop on exactly symmetric placements (an operand that touches
-  // itself where a face of the other passes; none of the long degenerate battery does now:
-  // docs/boolean.md, "Known limits"). That is a limit of the reference method, said as
-  // such, not an internal error.
+  // itself where a face of the other passes; none of the long degenerate battery does:
+  // docs/boolean.md, "Rounding and its repair"). That is a limit of the reference method,
+  // said as such, not an internal error.
   SurfaceResult pairwise_union(const SurfaceOptions& surface_options) const {
     try {
       return solvent_accessible_surface(atoms_, surface_options);
