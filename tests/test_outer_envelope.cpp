@@ -363,6 +363,11 @@ TEST(OuterEnvelope, CommandLine) {
   r = testing::run_molsurf("boolean union sphere.off cube.off -o c.off --outer-only", dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("open surface"), std::string::npos) << r.out;
+  // --outer-envelope is the same flag under its own name: the same file.
+  r = testing::run_molsurf("boolean union sphere.off cube.off -o e.off --outer-envelope", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(read_mesh(dir.path() / "e.off").vertices, read_mesh(dir.path() / "c.off").vertices);
+  EXPECT_EQ(read_mesh(dir.path() / "e.off").faces, read_mesh(dir.path() / "c.off").faces);
   // Only with union.
   r = testing::run_molsurf("boolean intersection sphere.off cube.off -o i.off --outer-only", dir.path());
   EXPECT_NE(r.exit_code, 0);

@@ -25,9 +25,11 @@ void BooleanCommand::add_options(CLI::App& app) {
       ->check(readable_file());
   app.add_option("B", b, "Second mesh, same requirements")->required()->check(readable_file());
   app.add_option("-o,--output", output, "Result mesh; the format follows the extension")->required();
-  app.add_flag("--outer-only", outer_only,
-               "union only: keep the outer envelope (what is seen from outside: no cavities); "
-               "A and B may then be open surfaces");
+  // Its own name: a surface's --outer-only drops cavities by their volume sign, while this is
+  // the paper's flood fill (§2.4), which also takes open surfaces. --outer-only stays an alias.
+  app.add_flag("--outer-envelope,--outer-only", outer_only,
+               "union only: keep the outer envelope, found by the paper's flood fill from outside (no "
+               "cavities); A and B may then be open surfaces. --outer-only is the same flag");
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
 }
 
