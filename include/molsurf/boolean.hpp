@@ -24,6 +24,14 @@ inline constexpr std::string_view kBooleanOpNames[] = {"union", "intersection", 
 struct BooleanTimings {  // seconds per step of the paper
   double cull = 0, intersect = 0, split = 0, classify = 0, stitch = 0;
   double total() const { return cull + intersect + split + classify + stitch; }
+  BooleanTimings& operator+=(const BooleanTimings& o) {
+    cull += o.cull;
+    intersect += o.intersect;
+    split += o.split;
+    classify += o.classify;
+    stitch += o.stitch;
+    return *this;
+  }
 };
 
 struct BooleanStats {

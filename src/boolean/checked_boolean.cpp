@@ -55,14 +55,6 @@ Vec3 first_defect_place(const Mesh& mesh, const MeshCheck& check) {
   return {};
 }
 
-void sum_seconds_into(BooleanTimings& total, const BooleanTimings& more) {
-  total.cull += more.cull;
-  total.intersect += more.intersect;
-  total.split += more.split;
-  total.classify += more.classify;
-  total.stitch += more.stitch;
-}
-
 }  // namespace
 
 CheckedBoolean valid_boolean(const Mesh& a, const Mesh& b, BooleanOp op, const MeshCheckOptions& options) {
@@ -86,7 +78,7 @@ CheckedBoolean valid_boolean(const Mesh& a, const Mesh& b, BooleanOp op, const M
       // operand (rare: b's own slivers), so that step is skipped.
       if (!check_mesh(moved, options).valid()) continue;
       BooleanResult retry = boolean(a, moved, op);
-      sum_seconds_into(seconds, retry.stats.seconds);
+      seconds += retry.stats.seconds;
       MeshCheck retry_check = check_mesh(retry.mesh, options);
       if (!retry_check.valid()) continue;
       retry.stats.seconds = seconds;

@@ -32,11 +32,7 @@ SurfaceLevel& SurfaceLevel::operator+=(const SurfaceLevel& o) {
   split_faces += o.split_faces;
   ray_casts += o.ray_casts;
   whole_reruns += o.whole_reruns;
-  steps.cull += o.steps.cull;
-  steps.intersect += o.steps.intersect;
-  steps.split += o.steps.split;
-  steps.classify += o.steps.classify;
-  steps.stitch += o.steps.stitch;
+  steps += o.steps;
   seconds += o.seconds;
   return *this;
 }
