@@ -6,8 +6,6 @@ import csv
 import json
 import math
 import subprocess
-import threading
-import time
 
 import numpy as np
 import pytest
@@ -171,35 +169,10 @@ def test_results_are_read_only_views_that_outlive_their_object(data_dir):
     assert "molsurf.Areas" in repr(molsurf.areas(data_dir / "1crn.pdb"))
 
 
-def test_the_gil_is_released_while_computing(data_dir):
+def test_the_gil_is_released_while_computing(data_dir, ticks_during, in_two_threads):
     structure = molsurf.read_structure(data_dir / "2hhb.pdb")
-    ticks = 0
-    done = threading.Event()
-
-    def count():
-        nonlocal ticks
-        while not done.is_set():
-            ticks += 1
-            time.sleep(0.001)
-
-    counter = threading.Thread(target=count)
-    counter.start()
-    start_ticks = ticks
-    try:
-        areas = molsurf.areas(structure, threads=1)
-    finally:
-        done.set()
-        counter.join()
+    areas, ticks = ticks_during(lambda: molsurf.areas(structure, threads=1))
     assert areas.area > 0
-    assert ticks - start_ticks > 5  # the counter ran while the arrangement was computed
-    results = [None, None]
-
-    def run(i):
-        results[i] = molsurf.areas(structure, threads=1)
-
-    workers = [threading.Thread(target=run, args=(i,)) for i in range(2)]
-    for w in workers:
-        w.start()
-    for w in workers:
-        w.join()
+    assert ticks > 5  # the counter ran while the arrangement was computed
+    results = in_two_threads(lambda: molsurf.areas(structure, threads=1))
     assert all(np.array_equal(r.area_per_atom, areas.area_per_atom) for r in results)

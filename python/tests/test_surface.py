@@ -231,39 +231,14 @@ def test_write_round_trips_and_checks_lossy_formats(crambin, tmp_path):
         crambin.write(tmp_path / "s.xyz")
 
 
-def test_the_gil_is_released_while_computing(data_dir):
+def test_the_gil_is_released_while_computing(data_dir, ticks_during, in_two_threads):
     structure = molsurf.read_structure(data_dir / "1ubq.pdb")
-    ticks = 0
-    done = threading.Event()
-
-    def count():
-        nonlocal ticks
-        while not done.is_set():
-            ticks += 1
-            time.sleep(0.001)
-
-    counter = threading.Thread(target=count)
-    counter.start()
-    start_ticks = ticks
-    try:
-        surface = molsurf.surface(structure, threads=1)
-    finally:
-        done.set()
-        counter.join()
+    surface, ticks = ticks_during(lambda: molsurf.surface(structure, threads=1))
     assert surface.area > 0
     # With the GIL held for the whole computation the counter could not have advanced.
-    assert ticks - start_ticks > 5
+    assert ticks > 5
     # Two surfaces in two Python threads give the same result as one after the other.
-    results = [None, None]
-
-    def run(i):
-        results[i] = molsurf.surface(structure, threads=1)
-
-    threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
+    results = in_two_threads(lambda: molsurf.surface(structure, threads=1))
     assert np.array_equal(results[0].vertices, surface.vertices)
     assert np.array_equal(results[1].faces, surface.faces)
 
