@@ -45,6 +45,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/parameters.hpp"
+#include "molsurf/patch_types.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_files.hpp"
@@ -1073,6 +1074,45 @@ PYBIND11_MODULE(molsurf, m) {
           [](py::object self) { return tags_view(self.cast<const PySurface&>().data->computed.mesh, self); },
           "(F,) int32: the index (into structure's atoms) of the atom whose sphere each face lies on:\n"
           "read-only view.")
+      .def(
+          "patches",
+          [](const PySurface& s) {
+            const SurfaceData& d = *s.data;
+            if (!d.computed.ses_arrangement)
+              throw Error("patches(): for the solvent-excluded surface (surface='ses') only");
+            const molsurf::Mesh& mesh = d.computed.mesh;
+            std::vector<molsurf::VertexPatch> labels;
+            {
+              py::gil_scoped_release release;
+              labels = molsurf::ses_vertex_patches(mesh.vertices, d.structure->atoms, d.spheres.probe,
+                                                   *d.computed.ses_arrangement);
+            }
+            const std::vector<molsurf::PatchType> face_types = molsurf::face_patch_types(mesh, labels);
+            const auto n = static_cast<py::ssize_t>(labels.size());
+            py::array_t<std::uint8_t> type(n);
+            py::array_t<std::int64_t> atom(n);
+            py::array_t<double> normal({n, py::ssize_t{3}});
+            auto t = type.mutable_unchecked<1>();
+            auto a = atom.mutable_unchecked<1>();
+            auto u = normal.mutable_unchecked<2>();
+            for (py::ssize_t v = 0; v < n; ++v) {
+              const molsurf::VertexPatch& l = labels[static_cast<std::size_t>(v)];
+              t(v) = static_cast<std::uint8_t>(l.type);
+              a(v) = l.atom;
+              u(v, 0) = l.normal.x;
+              u(v, 1) = l.normal.y;
+              u(v, 2) = l.normal.z;
+            }
+            py::array_t<std::uint8_t> face_type(static_cast<py::ssize_t>(face_types.size()));
+            auto f = face_type.mutable_unchecked<1>();
+            for (py::ssize_t k = 0; k < f.shape(0); ++k) f(k) = static_cast<std::uint8_t>(face_types[static_cast<std::size_t>(k)]);
+            return py::dict("vertex_type"_a = type, "vertex_atom"_a = atom, "vertex_normal"_a = normal,
+                            "face_type"_a = face_type);
+          },
+          "The SES's MSMS patch labels (what its .vert/.face files carry), as NumPy arrays in a dict:\n"
+          "vertex_type (V,) uint8 and face_type (F,) uint8, MSMS's numbers (1 toroidal, 2 reentrant,\n"
+          "3 contact); vertex_atom (V,) int64, the closest atom (0-based); vertex_normal (V, 3), the\n"
+          "analytic outward normal. Raises molsurf.Error for the SAS and vdW surfaces.")
       .def_property_readonly(
           "mesh",
           [](const PySurface& s) {

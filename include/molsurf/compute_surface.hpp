@@ -121,6 +121,10 @@ struct ComputedSurface {
   SphereArrangement exact;
   // The shell of `exact` each of measures.components follows (shells_of_components).
   std::vector<std::int64_t> component_shells;
+  // The solvent-excluded surface only (null otherwise): the arrangement of the atoms' r + probe
+  // spheres it was built from, where the probe's centre rolls. Its files' MSMS patch types,
+  // closest atoms and normals come from it (patch_types.hpp).
+  std::shared_ptr<const SphereArrangement> ses_arrangement;
   ComputeSurfaceTimings seconds;
   int threads = 1;  // used for every stage
 };
