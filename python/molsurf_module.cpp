@@ -83,6 +83,7 @@ struct SurfaceData {
   // outer_only respected); computed.measures holds the facets'.
   molsurf::ExactReport exact;
   std::vector<double> exact_atom_area;
+  std::shared_ptr<const SurfaceData> stern;  // surface(..., stern=probe): the Stern layer
 };
 
 struct PySurface {
@@ -421,9 +422,11 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
                      const std::string& method, bool cleanup, bool outer_only, bool area_corrected, bool check,
                      int threads, long long max_faces, std::optional<double> max_memory, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
-                     std::optional<std::filesystem::path> radius_file, py::object progress) {
+                     std::optional<std::filesystem::path> radius_file, py::object progress,
+                     std::optional<double> stern) {
   // Every parameter judged by the library (parameters.hpp), as the command's options are.
   molsurf::ComputeSurfaceOptions options;
+  options.stern_probe = stern;
   options.surface = molsurf::surface_kind_from_name(surface);
   options.spheres.probe = molsurf::surface_probe(options.surface, probe);
   options.spheres.density = density;
@@ -495,6 +498,17 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     } else {
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
       data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
+    }
+    if (data->computed.stern) {  // the Stern layer: a surface of its own, the SAS at its probe
+      auto layer = std::make_shared<SurfaceData>();
+      layer->computed = *data->computed.stern;
+      layer->structure = data->structure;
+      layer->spheres = options.spheres;
+      layer->spheres.probe = *stern;
+      layer->kind = molsurf::SurfaceKind::sas;
+      layer->exact = molsurf::make_exact_report(layer->computed.exact, layer->computed.component_shells, outer_only);
+      layer->exact_atom_area = molsurf::exact_atom_area(layer->computed.exact, outer_only);
+      data->stern = std::move(layer);
     }
   }, tick);
   return {std::move(data)};
@@ -1074,6 +1088,14 @@ PYBIND11_MODULE(molsurf, m) {
           [](py::object self) { return tags_view(self.cast<const PySurface&>().data->computed.mesh, self); },
           "(F,) int32: the index (into structure's atoms) of the atom whose sphere each face lies on:\n"
           "read-only view.")
+      .def_property_readonly(
+          "stern",
+          [](const PySurface& s) -> py::object {
+            if (!s.data->stern) return py::none();
+            return py::cast(PySurface{s.data->stern});
+          },
+          "The Stern layer (surface(..., stern=probe)): the SAS of the same atoms at that probe, a\n"
+          "Surface of its own (write() it as the command's --stern writes it); None when not asked for.")
       .def(
           "patches",
           [](const PySurface& s) {
@@ -1243,12 +1265,13 @@ PYBIND11_MODULE(molsurf, m) {
         "max_faces"_a = static_cast<long long>(molsurf::kDefaultMaxSphereFaces), "max_memory"_a = py::none(),
         "model"_a = py::none(),
         "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
-        "radius_set"_a = "protor", "radius_file"_a = py::none(), "progress"_a = py::none(),
+        "radius_set"_a = "protor", "radius_file"_a = py::none(), "progress"_a = py::none(), "stern"_a = py::none(),
         "surface(structure=None, *, centres=None, radii=None, surface='sas', probe=None, density=2.0,\n"
         "        frequency=None,\n"
         "        method='one-pass', cleanup=True, outer_only=False, area_corrected=True, check=True,\n"
         "        threads=0, max_faces=300000000, max_memory=None, model=None, chains=None, keep_water=False,\n"
-        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None, progress=None) -> Surface\n\n"
+        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None, progress=None,\n"
+        "        stern=None) -> Surface\n\n"
         "The surface of a structure, exactly as the molsurf command computes it (same defaults). The\n"
         "structure is a path (str or os.PathLike; read with the selection keywords, as read_structure),\n"
         "a molsurf.Structure, or a gemmi.Structure (no file written; selection keywords apply); or give\n"
@@ -1263,6 +1286,8 @@ PYBIND11_MODULE(molsurf, m) {
         "  (False: inscribed); check: run the exact self-intersection test (closedness always is);\n"
         "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs;\n"
         "  max_memory: the memory limit in GB (None: this machine's), as --max-memory;\n"
+        "  stern: also the Stern layer, the SAS of the same atoms at this probe (A; PyGBe: 2.0), as\n"
+        "    --stern-probe: Surface.stern;\n"
         "  progress: a callable, progress(stage, done, total), called on the calling thread as the job\n"
         "    goes (stage 'union', 'cleanup', 'check' or 'measures'; at most 20 times a second); an\n"
         "    exception it raises stops the job and is raised by surface().\n"

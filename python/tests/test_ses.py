@@ -58,3 +58,17 @@ def test_ses_patches_are_msms_types_with_unit_normals_and_its_files_carry_them(t
     with pytest.raises(molsurf.Error, match="solvent-excluded"):
         molsurf.surface(centres=centres, radii=radii).patches()
 
+
+def test_stern_layer_is_the_sas_at_its_probe_from_the_same_call(tmp_path):
+    centres = np.array([[0.0, 0.0, 0.0], [3.5, 0.0, 0.0], [1.7, 2.9, 0.0]])
+    radii = np.array([1.7, 1.5, 1.6])
+    ses = molsurf.surface(centres=centres, radii=radii, surface="ses", stern=2.0)
+    sas = molsurf.surface(centres=centres, radii=radii, probe=2.0)
+    assert ses.stern is not None and ses.stern.check.valid
+    assert ses.stern.area == pytest.approx(sas.area, rel=1e-12)
+    assert ses.stern.volume == pytest.approx(sas.volume, rel=1e-12)
+    assert molsurf.surface(centres=centres, radii=radii, surface="ses").stern is None
+    written = ses.stern.write(tmp_path / "stern.ply")
+    assert written and written[0].exists()
+    with pytest.raises(molsurf.Error, match="stern_probe"):
+        molsurf.surface(centres=centres, radii=radii, stern=-1.0)

@@ -262,6 +262,15 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   result.cleanup = attempt.cleanup;
   result.true_points = attempt.true_points;
   result.ses_arrangement = std::move(attempt.ses_arrangement);
+  if (requested.stern_probe) {
+    ComputeSurfaceOptions stern = requested;
+    stern.surface = SurfaceKind::sas;
+    stern.spheres.probe = *requested.stern_probe;
+    stern.stern_probe.reset();
+    stern.true_points = false;
+    stern.progress = nullptr;  // one progress display, the surface's
+    result.stern = std::make_shared<const ComputedSurface>(compute_surface(atoms, stern));
+  }
   result.quality_after = result.check.quality;
   result.quality_before = result.cleanup ? result.cleanup->before : result.quality_after;
   result.seconds.total = seconds_since(start);
