@@ -133,15 +133,24 @@ std::vector<long long> analytical_numbers(std::span<const VertexPatches> patches
   return number;
 }
 
-// The SES's analytic normals, oriented as the faces are (a cavity written on its own is
-// turned inside out, and its normals with it).
+// The SES's analytic normals, oriented as the faces are: a cavity written on its own is
+// turned inside out, and its normals with it. Each connected component is turned as a whole,
+// by the majority of its vertices' agreement with the faces' own normals, so that a vertex on
+// a crease (whose analytic normal can be far from its faces') is not turned alone.
 std::vector<Vec3> oriented_normals(const Mesh& mesh, std::span<const VertexPatch> patches) {
-  std::vector<Vec3> normals = vertex_normals(mesh);
+  const std::vector<Vec3> estimate = vertex_normals(mesh);
+  const Components components = connected_components(mesh);
+  std::vector<std::uint32_t> component(mesh.vertex_count(), 0);
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (Index v : mesh.faces[f]) component[v] = components.face_component[f];
+  std::vector<long long> votes(components.count, 0);
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const Vec3& analytic = patches[v].normal;
-    const double side = dot(analytic, normals[v]);
-    if (side != 0) normals[v] = side > 0 ? analytic : analytic * -1.0;
+    const double side = dot(patches[v].normal, estimate[v]);
+    votes[component[v]] += side > 0 ? 1 : side < 0 ? -1 : 0;
   }
+  std::vector<Vec3> normals(mesh.vertex_count());
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    normals[v] = votes.empty() || votes[component[v]] >= 0 ? patches[v].normal : patches[v].normal * -1.0;
   return normals;
 }
 
