@@ -45,6 +45,7 @@
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/output_files.hpp"
 #include "molsurf/parameters.hpp"
+#include "molsurf/patch_types.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_files.hpp"
@@ -82,6 +83,7 @@ struct SurfaceData {
   // outer_only respected); computed.measures holds the facets'.
   molsurf::ExactReport exact;
   std::vector<double> exact_atom_area;
+  std::shared_ptr<const SurfaceData> stern;  // surface(..., stern=probe): the Stern layer
 };
 
 struct PySurface {
@@ -420,9 +422,11 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
                      const std::string& method, bool cleanup, bool outer_only, bool area_corrected, bool check,
                      int threads, long long max_faces, std::optional<double> max_memory, std::optional<int> model,
                      py::object chains, bool keep_water, bool hydrogens, bool hetatm, const std::string& radius_set,
-                     std::optional<std::filesystem::path> radius_file, py::object progress) {
+                     std::optional<std::filesystem::path> radius_file, py::object progress,
+                     std::optional<double> stern) {
   // Every parameter judged by the library (parameters.hpp), as the command's options are.
   molsurf::ComputeSurfaceOptions options;
+  options.stern_probe = stern;
   options.surface = molsurf::surface_kind_from_name(surface);
   options.spheres.probe = molsurf::surface_probe(options.surface, probe);
   options.spheres.density = density;
@@ -494,6 +498,17 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     } else {
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
       data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
+    }
+    if (data->computed.stern) {  // the Stern layer: a surface of its own, the SAS at its probe
+      auto layer = std::make_shared<SurfaceData>();
+      layer->computed = *data->computed.stern;
+      layer->structure = data->structure;
+      layer->spheres = options.spheres;
+      layer->spheres.probe = *stern;
+      layer->kind = molsurf::SurfaceKind::sas;
+      layer->exact = molsurf::make_exact_report(layer->computed.exact, layer->computed.component_shells, outer_only);
+      layer->exact_atom_area = molsurf::exact_atom_area(layer->computed.exact, outer_only);
+      data->stern = std::move(layer);
     }
   }, tick);
   return {std::move(data)};
@@ -1074,6 +1089,53 @@ PYBIND11_MODULE(molsurf, m) {
           "(F,) int32: the index (into structure's atoms) of the atom whose sphere each face lies on:\n"
           "read-only view.")
       .def_property_readonly(
+          "stern",
+          [](const PySurface& s) -> py::object {
+            if (!s.data->stern) return py::none();
+            return py::cast(PySurface{s.data->stern});
+          },
+          "The Stern layer (surface(..., stern=probe)): the SAS of the same atoms at that probe, a\n"
+          "Surface of its own (write() it as the command's --stern writes it); None when not asked for.")
+      .def(
+          "patches",
+          [](const PySurface& s) {
+            const SurfaceData& d = *s.data;
+            if (!d.computed.ses_arrangement)
+              throw Error("patches(): for the solvent-excluded surface (surface='ses') only");
+            const molsurf::Mesh& mesh = d.computed.mesh;
+            std::vector<molsurf::VertexPatch> labels;
+            {
+              py::gil_scoped_release release;
+              labels = molsurf::ses_vertex_patches(mesh.vertices, d.structure->atoms, d.spheres.probe,
+                                                   *d.computed.ses_arrangement);
+            }
+            const std::vector<molsurf::PatchType> face_types = molsurf::face_patch_types(mesh, labels);
+            const auto n = static_cast<py::ssize_t>(labels.size());
+            py::array_t<std::uint8_t> type(n);
+            py::array_t<std::int64_t> atom(n);
+            py::array_t<double> normal({n, py::ssize_t{3}});
+            auto t = type.mutable_unchecked<1>();
+            auto a = atom.mutable_unchecked<1>();
+            auto u = normal.mutable_unchecked<2>();
+            for (py::ssize_t v = 0; v < n; ++v) {
+              const molsurf::VertexPatch& l = labels[static_cast<std::size_t>(v)];
+              t(v) = static_cast<std::uint8_t>(l.type);
+              a(v) = l.atom;
+              u(v, 0) = l.normal.x;
+              u(v, 1) = l.normal.y;
+              u(v, 2) = l.normal.z;
+            }
+            py::array_t<std::uint8_t> face_type(static_cast<py::ssize_t>(face_types.size()));
+            auto f = face_type.mutable_unchecked<1>();
+            for (py::ssize_t k = 0; k < f.shape(0); ++k) f(k) = static_cast<std::uint8_t>(face_types[static_cast<std::size_t>(k)]);
+            return py::dict("vertex_type"_a = type, "vertex_atom"_a = atom, "vertex_normal"_a = normal,
+                            "face_type"_a = face_type);
+          },
+          "The SES's MSMS patch labels (what its .vert/.face files carry), as NumPy arrays in a dict:\n"
+          "vertex_type (V,) uint8 and face_type (F,) uint8, MSMS's numbers (1 toroidal, 2 reentrant,\n"
+          "3 contact); vertex_atom (V,) int64, the closest atom (0-based); vertex_normal (V, 3), the\n"
+          "analytic outward normal. Raises molsurf.Error for the SAS and vdW surfaces.")
+      .def_property_readonly(
           "mesh",
           [](const PySurface& s) {
             // Shares the surface's memory (aliasing pointer), no copy.
@@ -1203,12 +1265,13 @@ PYBIND11_MODULE(molsurf, m) {
         "max_faces"_a = static_cast<long long>(molsurf::kDefaultMaxSphereFaces), "max_memory"_a = py::none(),
         "model"_a = py::none(),
         "chains"_a = py::none(), "keep_water"_a = false, "hydrogens"_a = false, "hetatm"_a = true,
-        "radius_set"_a = "protor", "radius_file"_a = py::none(), "progress"_a = py::none(),
+        "radius_set"_a = "protor", "radius_file"_a = py::none(), "progress"_a = py::none(), "stern"_a = py::none(),
         "surface(structure=None, *, centres=None, radii=None, surface='sas', probe=None, density=2.0,\n"
         "        frequency=None,\n"
         "        method='one-pass', cleanup=True, outer_only=False, area_corrected=True, check=True,\n"
         "        threads=0, max_faces=300000000, max_memory=None, model=None, chains=None, keep_water=False,\n"
-        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None, progress=None) -> Surface\n\n"
+        "        hydrogens=False, hetatm=True, radius_set='protor', radius_file=None, progress=None,\n"
+        "        stern=None) -> Surface\n\n"
         "The surface of a structure, exactly as the molsurf command computes it (same defaults). The\n"
         "structure is a path (str or os.PathLike; read with the selection keywords, as read_structure),\n"
         "a molsurf.Structure, or a gemmi.Structure (no file written; selection keywords apply); or give\n"
@@ -1223,6 +1286,8 @@ PYBIND11_MODULE(molsurf, m) {
         "  (False: inscribed); check: run the exact self-intersection test (closedness always is);\n"
         "  threads: 0 for all cores (the result does not depend on it); max_faces: refuse larger jobs;\n"
         "  max_memory: the memory limit in GB (None: this machine's), as --max-memory;\n"
+        "  stern: also the Stern layer, the SAS of the same atoms at this probe (A; PyGBe: 2.0), as\n"
+        "    --stern-probe: Surface.stern;\n"
         "  progress: a callable, progress(stage, done, total), called on the calling thread as the job\n"
         "    goes (stage 'union', 'cleanup', 'check' or 'measures'; at most 20 times a second); an\n"
         "    exception it raises stops the job and is raised by surface().\n"

@@ -43,6 +43,9 @@ enum class SurfaceKind { sas, ses, vdw };
 inline constexpr std::string_view kSurfaceKindNames[] = {"sas", "ses", "vdw"};  // in the enum's order
 const char* surface_kind_name(SurfaceKind kind);  // "sas", "ses", "vdw"
 
+// PyGBe's Stern layer: the atoms' radii grown by 2 A (its generateStern.py) before meshing.
+inline constexpr double kDefaultSternProbe = 2.0;
+
 struct ComputeSurfaceOptions {
   SphereOptions spheres;
   // With ses, spheres.probe is the rolling probe's radius (above 0); with vdw it is ignored.
@@ -70,6 +73,11 @@ struct ComputeSurfaceOptions {
   // (available_memory_bytes); the maximum of std::uint64_t: no limit.
   std::uint64_t max_memory = 0;
   std::filesystem::path source = "atoms";
+  // Also the Stern layer of the same atoms: their solvent-accessible surface at this probe
+  // (the union of the r + stern_probe spheres; the ion-exclusion layer a BEM solver such as
+  // PyGBe takes as its second surface: kDefaultSternProbe), made with the same density,
+  // cleanup, check and outer_only. Absent: none.
+  std::optional<double> stern_probe;
   // Called as the work advances with (stage, done, total), from one thread at a time but
   // not always the caller's (the pairwise union reports from its worker threads). The
   // union reports (atoms trimmed, atoms) or (merges done, merges); every stage also
@@ -121,6 +129,13 @@ struct ComputedSurface {
   SphereArrangement exact;
   // The shell of `exact` each of measures.components follows (shells_of_components).
   std::vector<std::int64_t> component_shells;
+  // The solvent-excluded surface only (null otherwise): the arrangement of the atoms' r + probe
+  // spheres it was built from, where the probe's centre rolls. Its files' MSMS patch types,
+  // closest atoms and normals come from it (patch_types.hpp).
+  std::shared_ptr<const SphereArrangement> ses_arrangement;
+  // With ComputeSurfaceOptions::stern_probe: the Stern layer, computed as the SAS at that probe
+  // is (its own checked mesh, measures and exact arrangement). Null otherwise.
+  std::shared_ptr<const ComputedSurface> stern;
   ComputeSurfaceTimings seconds;
   int threads = 1;  // used for every stage
 };

@@ -2,12 +2,14 @@
 // Mesh files: the format follows the extension. Every write is atomic: the data goes
 // to a temporary file beside the target, which is renamed over it only when complete.
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
+#include "molsurf/sphere_arrangement.hpp"
 
 namespace molsurf {
 
@@ -41,6 +43,11 @@ struct MeshWriteOptions {
   // the spheres' own inside a patch. False for the SES, whose toroidal and reentrant faces
   // lie on no atom's sphere: normals are the faces' area-weighted means there too.
   bool faces_on_atom_spheres = true;
+  // The solvent-excluded surface's: the arrangement of `atoms`' r + probe_radius spheres
+  // (ComputedSurface::ses_arrangement). With it (and `atoms`), MSMS rows carry each vertex's
+  // patch type (contact, toroidal, reentrant), closest atom and analytic normal, and each
+  // face's type (patch_types.hpp).
+  std::shared_ptr<const SphereArrangement> ses_arrangement;
   double probe_radius = 1.4;   // recorded in MSMS headers
   double density = 2.0;        // recorded in MSMS headers
   int threads = 0;             // for the parallel parts (.vtp's compression); 0: OpenMP's default

@@ -47,6 +47,7 @@ struct WholeParameter {
 };
 
 inline constexpr NumberParameter kProbeParameter{"probe", 0, 1e15};               // angstrom
+inline constexpr NumberParameter kSternProbeParameter{"stern_probe", 0, 1e15};    // angstrom
 inline constexpr NumberParameter kDensityParameter{"density", 0, 1e9, true};      // vertices per A^2
 inline constexpr NumberParameter kMaxMemoryParameter{"max_memory", 0, 1e9, true};  // GB
 inline constexpr NumberParameter kBoxMarginParameter{"box_margin", 0, 1e6, true};  // angstrom

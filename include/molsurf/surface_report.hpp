@@ -69,6 +69,16 @@ struct ModelReport {
   std::size_t faces = 0;         // the mesh's
 };
 
+// The Stern layer made in the same run (--stern): the SAS of the same atoms at its own probe.
+struct SternReport {
+  double probe = 0;
+  std::filesystem::path output;
+  std::size_t faces = 0;
+  double area = 0, volume = 0;              // the true spheres' (r + probe)
+  double facet_area = 0, facet_volume = 0;  // the mesh's, as its file holds it
+  bool valid = false;                       // its check as written
+};
+
 struct SurfaceReport {
   ReadReport input;
   SphereOptions spheres;
@@ -99,6 +109,7 @@ struct SurfaceReport {
   std::span<const Atom> atoms;
   std::vector<double> atom_area;
   std::vector<ModelReport> models;  // --all-models: every model's numbers (the rest is the first's)
+  std::optional<SternReport> stern;  // --stern
 };
 
 SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);

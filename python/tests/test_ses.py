@@ -35,3 +35,40 @@ def test_ses_refuses_probe_zero():
     # As the command line's --surface vdw --probe 2: the vdW surface is the one at probe 0.
     with pytest.raises(molsurf.Error, match="probe 0"):
         molsurf.surface(centres=np.array([[0.0, 0.0, 0.0]]), radii=np.array([1.7]), surface="vdw", probe=2.0)
+
+
+def test_ses_patches_are_msms_types_with_unit_normals_and_its_files_carry_them(tmp_path):
+    centres = np.array([[0.0, 0.0, 0.0], [3.6, 0.0, 0.0], [1.8, 3.6 * math.sqrt(3) / 2, 0.0]])
+    radii = np.array([1.6, 1.6, 1.6])
+    s = molsurf.surface(centres=centres, radii=radii, surface="ses")
+    p = s.patches()
+    assert p["vertex_type"].shape == (len(s.vertices),)
+    assert p["face_type"].shape == (len(s.faces),)
+    assert set(np.unique(p["vertex_type"])) == {1, 2, 3}  # toroidal, reentrant, contact
+    assert np.allclose(np.linalg.norm(p["vertex_normal"], axis=1), 1.0, atol=1e-12)
+    assert p["vertex_atom"].min() >= 0 and p["vertex_atom"].max() < 3
+    # The files carry what patches() gives: PyGBe's reading, numbers only.
+    s.write(tmp_path / "ses.vert", msms_header=False)
+    vert = np.loadtxt(tmp_path / "ses.vert")
+    face = np.loadtxt(tmp_path / "ses.face", dtype=int)
+    assert np.array_equal(vert[:, 8].astype(int), p["vertex_type"])
+    assert np.array_equal(vert[:, 7].astype(int), p["vertex_atom"] + 1)
+    assert np.array_equal(face[:, 3], p["face_type"])
+    assert np.abs(vert[:, 3:6] - p["vertex_normal"]).max() <= 5e-4 + 1e-12
+    with pytest.raises(molsurf.Error, match="solvent-excluded"):
+        molsurf.surface(centres=centres, radii=radii).patches()
+
+
+def test_stern_layer_is_the_sas_at_its_probe_from_the_same_call(tmp_path):
+    centres = np.array([[0.0, 0.0, 0.0], [3.5, 0.0, 0.0], [1.7, 2.9, 0.0]])
+    radii = np.array([1.7, 1.5, 1.6])
+    ses = molsurf.surface(centres=centres, radii=radii, surface="ses", stern=2.0)
+    sas = molsurf.surface(centres=centres, radii=radii, probe=2.0)
+    assert ses.stern is not None and ses.stern.check.valid
+    assert ses.stern.area == pytest.approx(sas.area, rel=1e-12)
+    assert ses.stern.volume == pytest.approx(sas.volume, rel=1e-12)
+    assert molsurf.surface(centres=centres, radii=radii, surface="ses").stern is None
+    written = ses.stern.write(tmp_path / "stern.ply")
+    assert written and written[0].exists()
+    with pytest.raises(molsurf.Error, match="stern_probe"):
+        molsurf.surface(centres=centres, radii=radii, stern=-1.0)

@@ -59,6 +59,11 @@ struct SurfaceCommand {
   double volume_size = 0;
   bool fill_inside = false;
   const CLI::Option* volume_option = nullptr;
+  // The Stern layer from the same run (the SAS at stern_probe), for BEM solvers' second surface.
+  std::filesystem::path stern;
+  double stern_probe = kDefaultSternProbe;
+  const CLI::Option* stern_option = nullptr;
+  const CLI::Option* stern_probe_option = nullptr;
 
   void add_options(CLI::App& app);  // surface_options.cpp
   // --threads lowered, with a note, to what this process can start (startable_threads).

@@ -91,6 +91,7 @@ ComputeSurfaceOptions SurfaceCommand::compute_options() const {
   options.method = surface_method_from_name(method);
   options.threads = threads;
   options.outer_only = outer_only;
+  if (stern_option->count() > 0) options.stern_probe = stern_probe;
   options.cleanup = !skip_cleanup;
   options.check_self_intersections = !skip_check;
   options.true_points = true_points;
@@ -136,6 +137,8 @@ int SurfaceCommand::run() const {
   }
   // The rules between the options, as the library has them (a ParameterError names the option).
   validate(compute_options());
+  if (stern_probe_option->count() > 0 && stern_option->count() == 0)
+    throw Error("--stern-probe: give --stern FILE as well (the Stern layer's file)");
   if (!formats.empty() && all_models) throw Error("--format writes one model: drop --all-models, or give --model N");
   if (areas_only) return run_areas_only();
   if (!formats.empty() && output_option->count() == 0) {
@@ -210,6 +213,7 @@ int SurfaceCommand::run() const {
   // All or nothing: every file is complete before any replaces an old one.
   OutputFiles files;
   add_surface_files(*this, out, surface, written, surface_check_options(computed, threads), inputs, outputs, files);
+  if (computed.stern) report.stern = add_stern_file(*this, *computed.stern, s.atoms, files);
   const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
   add_area_tables(*this, s.atoms, atom_area, report, files);
@@ -230,6 +234,7 @@ int SurfaceCommand::run_areas_only() const {
   for (const auto& [option, name] : mesh_options)
     if (option->count() > 0) throw Error(std::string("--areas-only writes no mesh: drop ") + name);
   if (split_components) throw Error("--areas-only writes no mesh: drop --split-components");
+  if (stern_option->count() > 0) throw Error("--areas-only writes no mesh: drop --stern");
   if (true_points) throw Error("--areas-only writes no mesh: drop --true-points");
   if (all_models && sasa_structure_option->count() > 0)
     throw Error("--sasa-structure writes one model: drop --all-models, or give --model N");
@@ -286,6 +291,7 @@ int SurfaceCommand::run_areas_only() const {
 int SurfaceCommand::run_model_meshes() const {
   const std::pair<bool, const char*> single_mesh[] = {{split_components, "--split-components"},
                                                       {volume_option->count() > 0, "--volume-mesh"},
+                                                      {stern_option->count() > 0, "--stern"},
                                                       {true_points, "--true-points"}};
   for (const auto& [given, name] : single_mesh)
     if (given) throw Error(std::string("--all-models writes one mesh per model: drop ") + name);

@@ -139,6 +139,16 @@ void SurfaceCommand::add_options(CLI::App& app) {
                "One file per closed surface: NAME.outer.EXT and NAME.cavity-K.EXT (K from 1, largest cavity\n"
                "first, as in the report) for -o NAME.EXT, each closed and outward on its own")
       ->group(output_group);
+  stern_option = app.add_option("--stern", stern,
+                                "Also write the Stern layer of the same atoms to this file (any mesh format): their\n"
+                                "solvent-accessible surface at --stern-probe, checked as written, in the report too")
+                     ->group(output_group);
+  stern_probe_option =
+      app.add_option("--stern-probe", stern_probe,
+                     "The Stern layer's probe in angstrom: each atom's radius grown by it (PyGBe adds 2 A)")
+          ->check(number_in(kSternProbeParameter))
+          ->capture_default_str()
+          ->group(output_group);
   app.add_flag("--ascii", ascii, "Write .ply and .stl as text (binary by default); tetgen needs ASCII PLY")
       ->group(output_group);
   app.add_flag("--no-header", no_header,

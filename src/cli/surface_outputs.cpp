@@ -9,6 +9,7 @@
 #include "molsurf/report.hpp"
 #include "molsurf/sasa_structure.hpp"
 #include "molsurf/split_components.hpp"
+#include "molsurf/surface_files.hpp"
 #include "io/standard_output.hpp"
 
 namespace molsurf::cli {
@@ -62,6 +63,10 @@ std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, cons
   std::vector<OutputRequest> outputs{{out, "-o", true}};
   add_report_outputs(command, outputs);
   add_sasa_structure_output(command, outputs);
+  if (command.stern_option->count() > 0) {
+    check_stern_format(command);
+    outputs.push_back({command.stern, "--stern", true});
+  }
   if (command.volume_option->count() > 0) {
     outputs.push_back({command.volume_mesh, "--volume-mesh", true});
     if (command.volume_mesh.extension() != ".msh")
@@ -85,6 +90,43 @@ void check_format_options(const SurfaceCommand& command, const std::filesystem::
                 ", which has no MSMS header; --no-header is for .vert/.face");
 }
 
+
+// --stern's file: a mesh format, before any work.
+void check_stern_format(const SurfaceCommand& command) {
+  try {
+    mesh_format_from_path(command.stern);
+  } catch (const Error& e) {
+    throw Error(std::string("--stern: ") + e.what());
+  }
+}
+
+// The Stern layer's file (--stern), checked as the file will hold it (the MSMS header and
+// --ascii as for the surface), and its report: the true spheres' area and volume.
+SternReport add_stern_file(const SurfaceCommand& command, const ComputedSurface& stern, std::span<const Atom> atoms,
+                           OutputFiles& files) {
+  SphereOptions spheres = command.spheres;
+  spheres.probe = command.stern_probe;
+  const bool msms = mesh_format_from_path(command.stern) == MeshFormat::msms;
+  const SurfaceFileOptions file{.ascii = command.ascii, .msms_header = !(command.no_header && msms),
+                                .threads = command.threads};
+  const WrittenCheck written = check_surface_as_written(
+      command.stern, stern, surface_write_options(SurfaceKind::sas, spheres, atoms, command.structure, file));
+  if (!written.note.empty() && !command.quiet) std::cerr << "molsurf: note: --stern: " << written.note << "\n";
+  files.add_mesh(command.stern, stern.mesh, written.options);
+  const SurfaceMeasures measures =
+      written.rounded ? measure_surface(*written.rounded, written.check, atoms.size()) : stern.measures;
+  const ExactReport exact = make_exact_report(stern.exact, stern.component_shells, command.outer_only);
+  SternReport report;
+  report.probe = command.stern_probe;
+  report.output = command.stern;
+  report.faces = measures.faces;
+  report.area = exact.area;
+  report.volume = exact.volume;
+  report.facet_area = measures.area;
+  report.facet_volume = measures.volume;
+  report.valid = written.check.valid();
+  return report;
+}
 
 // The report's description of the surface as the file holds it.
 void describe_written_surface(const SurfaceMeasures& measures, const ComputedSurface& computed,

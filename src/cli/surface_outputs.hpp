@@ -32,6 +32,11 @@ void add_sasa_structure_output(const SurfaceCommand& command, std::vector<Output
 std::vector<OutputRequest> requested_outputs(const SurfaceCommand& command, const std::filesystem::path& out);
 // Rejects an unknown extension of `out`, and options that do not apply to it, before any work.
 void check_format_options(const SurfaceCommand& command, const std::filesystem::path& out);
+// --stern's file: a mesh format, before any work.
+void check_stern_format(const SurfaceCommand& command);
+// The Stern layer's file (--stern), checked as the file will hold it, and its report.
+SternReport add_stern_file(const SurfaceCommand& command, const ComputedSurface& stern, std::span<const Atom> atoms,
+                           OutputFiles& files);
 // Where the text report goes: standard error when a report takes standard output.
 std::ostream& text_stream(std::span<const OutputRequest> outputs);
 

@@ -99,6 +99,7 @@ void validate(const ComputeSurfaceOptions& options) {
   check(kDensityParameter, options.spheres.density);
   if (options.spheres.frequency != 0) check(kFrequencyParameter, options.spheres.frequency);
   check(kThreadsParameter, options.threads);
+  if (options.stern_probe) check(kSternProbeParameter, *options.stern_probe);
   if (options.max_sphere_faces < static_cast<std::uint64_t>(kMaxFacesParameter.low) ||
       options.max_sphere_faces > static_cast<std::uint64_t>(kMaxFacesParameter.high))
     throw ParameterError(kMaxFacesParameter.name, std::to_string(options.max_sphere_faces) +

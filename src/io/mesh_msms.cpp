@@ -13,6 +13,11 @@
 // the same 9-character column where it fits. Readers of .vert split on whitespace
 // (docs/formats.md), so the wider numbers are read correctly.
 //
+// The solvent-excluded surface (MeshWriteOptions::ses_arrangement given) has MSMS's three
+// kinds of patch: each vertex gets its patch type, closest atom and analytic normal from the
+// probe position nearest it (patch_types.hpp), each face the type its vertices share (else
+// by majority, else toroidal); the analytical face numbers follow the face tags as below.
+//
 // What MSMS's columns mean for a union of atom spheres (MSMS manual, docs/formats.md):
 //  - every triangle lies on an atom's sphere, which MSMS calls a contact face: type 3
 //    for every vertex and face (1 and 2 are the SES's toric and spheric reentrant faces,
@@ -44,12 +49,13 @@
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
 #include "molsurf/error.hpp"
+#include "molsurf/patch_types.hpp"
 
 namespace molsurf::mesh_io {
 
 namespace {
 
-constexpr int kContactType = 3;  // MSMS: 1 toric reentrant, 2 spheric reentrant, 3 contact
+constexpr int kContactType = static_cast<int>(PatchType::contact);  // MSMS: 1 toric reentrant, 2 spheric reentrant, 3 contact
 
 struct PairPaths {
   path vert;
@@ -127,6 +133,27 @@ std::vector<long long> analytical_numbers(std::span<const VertexPatches> patches
   return number;
 }
 
+// The SES's analytic normals, oriented as the faces are: a cavity written on its own is
+// turned inside out, and its normals with it. Each connected component is turned as a whole,
+// by the majority of its vertices' agreement with the faces' own normals, so that a vertex on
+// a crease (whose analytic normal can be far from its faces') is not turned alone.
+std::vector<Vec3> oriented_normals(const Mesh& mesh, std::span<const VertexPatch> patches) {
+  const std::vector<Vec3> estimate = vertex_normals(mesh);
+  const Components components = connected_components(mesh);
+  std::vector<std::uint32_t> component(mesh.vertex_count(), 0);
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (Index v : mesh.faces[f]) component[v] = components.face_component[f];
+  std::vector<long long> votes(components.count, 0);
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const double side = dot(patches[v].normal, estimate[v]);
+    votes[component[v]] += side > 0 ? 1 : side < 0 ? -1 : 0;
+  }
+  std::vector<Vec3> normals(mesh.vertex_count());
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    normals[v] = votes.empty() || votes[component[v]] >= 0 ? patches[v].normal : patches[v].normal * -1.0;
+  return normals;
+}
+
 // Unit normals (see the file comment): the sphere's inside a patch, the area-weighted
 // mean of the faces around the vertex elsewhere and without atoms. The sphere's normal is
 // oriented as the faces are, so a component written turned inside out stays consistent.
@@ -166,6 +193,8 @@ std::string header_comment(const char* what, const MeshWriteOptions& options) {
     if (c == '\n' || c == '\r') c = ' ';
   const char* faces = options.atoms.empty()               ? ")\n"
                       : options.faces_on_atom_spheres ? ": a union of atom spheres, every face a contact face)\n"
+                      : options.ses_arrangement       ? ": types 1 toroidal, 2 reentrant, 3 contact, from the nearest "
+                                                        "probe position; normals analytic)\n"
                                                       : ": type 3 on every face; contact, toric and reentrant faces "
                                                         "not told apart)\n";
   return std::string("# MSMS-format ") + what + " of the " + description + " (molsurf " MOLSURF_VERSION + faces;
@@ -252,10 +281,24 @@ void for_each_row(const path& file, std::string text, const char* what, OnRow on
 void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const MeshWriteOptions& options) {
   const PairPaths paths = pair_paths(file);
   const std::vector<VertexPatches> patches = vertex_patches(mesh);
-  const std::vector<Vec3> normals =
-      options.faces_on_atom_spheres ? msms_normals(mesh, options.atoms, patches) : vertex_normals(mesh);
+  const bool ses = options.ses_arrangement && !options.atoms.empty();
+  const std::vector<VertexPatch> ses_patches =
+      ses ? ses_vertex_patches(mesh.vertices, options.atoms, options.probe_radius, *options.ses_arrangement)
+          : std::vector<VertexPatch>{};
+  const std::vector<Vec3> normals = ses                             ? oriented_normals(mesh, ses_patches)
+                                    : options.faces_on_atom_spheres ? msms_normals(mesh, options.atoms, patches)
+                                                                    : vertex_normals(mesh);
   const std::vector<long long> analytical = analytical_numbers(patches);
-  const std::vector<long long> closest = closest_spheres(mesh, options.atoms);
+  std::vector<long long> closest = closest_spheres(mesh, options.atoms);
+  std::vector<int> vertex_type(mesh.vertex_count(), kContactType), face_type(mesh.face_count(), kContactType);
+  if (ses) {
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+      closest[v] = ses_patches[v].atom + 1LL;
+      vertex_type[v] = static_cast<int>(ses_patches[v].type);
+    }
+    const std::vector<PatchType> types = face_patch_types(mesh, ses_patches);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) face_type[f] = static_cast<int>(types[f]);
+  }
   const std::size_t spheres = sphere_count(mesh, options.atoms);
   // Names only when the atoms have some, as MSMS writes them only when its input names them.
   const bool names = options.msms_atom_names &&
@@ -273,7 +316,7 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
       vert += ' ';
     }
     append_formatted(vert, "%9.3f %9.3f %9.3f %7lld %7lld %2d", n.x, n.y, n.z, analytical[v], closest[v],
-                     kContactType);
+                     vertex_type[v]);
     if (names) {
       vert += ' ';
       vert += closest[v] > 0 ? atom_token(options.atoms[static_cast<std::size_t>(closest[v] - 1)]) : "?";
@@ -286,7 +329,7 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
   if (options.msms_header) append_msms_header(face, "faces", "#faces ", mesh.face_count(), spheres, options);
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const Triangle& t = mesh.faces[f];
-    append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, kContactType,
+    append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, face_type[f],
                      std::max(mesh.tag(f), kNoTag) + 1);
   }
 

@@ -203,6 +203,10 @@ std::string format_surface_report(const SurfaceReport& r) {
     row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
   }
   if (r.exact) format_shells(r, row);
+  if (r.stern)
+    row("stern layer", r.stern->output.string() + " (solvent-accessible at probe " + fixed(r.stern->probe, 2) +
+                           " A, " + std::to_string(r.stern->faces) + " faces): area " + fixed(r.stern->area, 2) +
+                           " A^2, volume " + fixed(r.stern->volume, 2) + " A^3 (true spheres)");
   if (r.chains.size() > 1) row("by chain", chain_areas(r));
   if (r.classes) row("by class", class_line(*r.classes));
   std::size_t cavities = 0;
@@ -350,6 +354,12 @@ std::string surface_report_json(const SurfaceReport& r) {
   j.field("faces", r.faces).field("vertices", r.vertices);
   if (!r.exact) j.field("area", r.area).field("volume", r.volume);
   j.field("facet_area", r.area).field("facet_volume", r.volume);
+  if (r.stern) {
+    const SternReport& s = *r.stern;
+    j.key("stern").begin_object().field("output", s.output.string()).field("probe", s.probe).field("faces", s.faces);
+    j.field("area", s.area).field("volume", s.volume).field("facet_area", s.facet_area);
+    j.field("facet_volume", s.facet_volume).field("valid", s.valid).end_object();
+  }
   j.key("components").begin_array();
   for (std::size_t k = 0; k < r.components.size(); ++k) {
     const ComponentMeasure& c = r.components[k];

@@ -42,6 +42,7 @@ struct Attempt {
   MeshCheck check;
   std::optional<CleanupStats> cleanup;
   std::optional<TruePointStats> true_points;
+  std::shared_ptr<const SphereArrangement> ses_arrangement;  // the SES's r + probe spheres
 };
 
 class Pipeline {
@@ -75,6 +76,7 @@ class Pipeline {
       ses_detail::ExcludedSurface ses = ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_);
       attempt.method = SurfaceMethod::one_pass;
       attempt.mesh = options_.outer_only ? outer_surface_only(ses.mesh) : std::move(ses.mesh);
+      attempt.ses_arrangement = std::make_shared<const SphereArrangement>(std::move(ses.arrangement));
     } else {
       SurfaceResult sas = method == SurfaceMethod::pairwise ? pairwise_union(surface_options)
                                                             : solvent_accessible_surface(atoms_, surface_options);
@@ -259,6 +261,16 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   result.check = std::move(attempt.check);
   result.cleanup = attempt.cleanup;
   result.true_points = attempt.true_points;
+  result.ses_arrangement = std::move(attempt.ses_arrangement);
+  if (requested.stern_probe) {
+    ComputeSurfaceOptions stern = requested;
+    stern.surface = SurfaceKind::sas;
+    stern.spheres.probe = *requested.stern_probe;
+    stern.stern_probe.reset();
+    stern.true_points = false;
+    stern.progress = nullptr;  // one progress display, the surface's
+    result.stern = std::make_shared<const ComputedSurface>(compute_surface(atoms, stern));
+  }
   result.quality_after = result.check.quality;
   result.quality_before = result.cleanup ? result.cleanup->before : result.quality_after;
   result.seconds.total = seconds_since(start);

@@ -34,8 +34,10 @@ MeshCheckOptions surface_check_options(const ComputedSurface& surface, int threa
 
 WrittenCheck check_surface_as_written(const std::filesystem::path& path, const ComputedSurface& surface,
                                       const MeshWriteOptions& options) {
-  return check_as_written(path, surface.mesh, surface.check, options, surface_check_options(surface, options.threads),
-                          [](const MeshCheck& c) { return c.valid(); });
+  MeshWriteOptions with_patches = options;
+  if (!options.faces_on_atom_spheres) with_patches.ses_arrangement = surface.ses_arrangement;
+  return check_as_written(path, surface.mesh, surface.check, with_patches,
+                          surface_check_options(surface, options.threads), [](const MeshCheck& c) { return c.valid(); });
 }
 
 WrittenSurface write_surface(const std::filesystem::path& path, const ComputedSurface& surface,

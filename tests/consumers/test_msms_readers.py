@@ -53,6 +53,27 @@ def test_pygbe_reads_one_closed_surface_per_file(run_molsurf, data_dir):
         assert volume > 0
 
 
+
+def test_pygbe_reads_the_ses_with_its_patch_columns_and_its_stern_layer(run_molsurf, data_dir, tmp_path):
+    stern = tmp_path / "s_stern"
+    run = run_molsurf(data_dir / "pdb" / "1crn.pdb", "s.vert", "--surface", "ses", "--no-header",
+                      "--stern", f"{stern}.vert")
+    vertex, triangle = pygbe_read(run.directory / "s", "dielectric_interface")
+    assert len(triangle) == run.report["faces"]
+    rows = np.loadtxt(run.directory / "s.vert")
+    faces = np.loadtxt(run.directory / "s.face", dtype=int)
+    assert set(np.unique(rows[:, 8]).astype(int)) == {1, 2, 3}  # toroidal, reentrant, contact
+    assert set(np.unique(faces[:, 3])) == {1, 2, 3}
+    assert np.abs(np.linalg.norm(rows[:, 3:6], axis=1) - 1).max() < 0.003
+    # The analytic normals point the way PyGBe's face normals do (out of the solid).
+    normal, area = pygbe_normals(vertex, triangle)
+    corner_mean = rows[:, 3:6][triangle].mean(axis=1)
+    assert np.sum(area * np.einsum("ij,ij->i", normal, corner_mean)) > 0.95 * area.sum()
+    stern_vertex, stern_triangle = pygbe_read(stern, "dielectric_interface")
+    _, stern_area = pygbe_normals(stern_vertex, stern_triangle)
+    assert len(stern_triangle) == run.report["stern"]["faces"]
+    assert stern_area.sum() == pytest.approx(run.report["stern"]["facet_area"], rel=2e-3)  # 3 decimals
+
 def test_masif_reads_atom_names(run_molsurf, data_dir):
     run = run_molsurf(data_dir / "pdb" / "1crn.pdb", "m.vert")
     lines = (run.directory / "m.vert").read_text().rstrip().split("\n")
