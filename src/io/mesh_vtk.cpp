@@ -31,6 +31,7 @@ namespace {
 
 template <class T>
 void store_big_endian(char* out, T value) {
+  static_assert(sizeof(T) == 2 || sizeof(T) == 4 || sizeof(T) == 8);
   using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t,
                                   std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint16_t>>;
   auto bits = std::bit_cast<Bits>(value);
@@ -57,8 +58,7 @@ void append_string(std::string& out, const std::string& s) {
   const std::uint64_t length = s.size();
   char prefix[8];
   if (length < (std::uint64_t{1} << 6)) {
-    store_big_endian(prefix, static_cast<std::uint8_t>(0xc0u | length));
-    out.append(prefix, 1);
+    out += static_cast<char>(0xc0u | length);
   } else if (length < (std::uint64_t{1} << 14)) {
     store_big_endian(prefix, static_cast<std::uint16_t>(0x8000u | length));
     out.append(prefix, 2);
