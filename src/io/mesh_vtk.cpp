@@ -10,7 +10,7 @@
 // "POLYGONS faces 4*faces" and per face 3, a, b, c as int32 (version 4.2's only id type);
 // "CELL_DATA faces" with the arrays as a FIELD; "POINT_DATA n" with the normals as the
 // NORMALS attribute. Every number is big-endian, every block of values ends with "\n",
-// and a section with no values is left out. A string is its length in 1, 2, 4 or 8
+// and the sections after POINTS are left out when they would hold no values. A string is its length in 1, 2, 4 or 8
 // big-endian bytes (the top two bits of the first byte say which: 11, 10, 01, 00) and
 // its bytes as they are.
 #include <bit>
