@@ -1,6 +1,6 @@
 #pragma once
-// molsurf's readers take paths (the format follows the extension, and VTK and gemmi open
-// files themselves), so each fuzz input is written to a scratch file first. One per
+// molsurf's readers take paths (the format follows the extension, and gemmi opens
+// files itself), so each fuzz input is written to a scratch file first. One per
 // process: libFuzzer runs inputs one after another in a process, and `-jobs`/`-fork`
 // workers are separate processes with their own pid.
 #include <unistd.h>

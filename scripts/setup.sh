@@ -8,6 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
 
+# libvtk9-dev is for the tests only (VTK's reader and writer are the reference for molsurf's
+# own .vtk and .vtp code; neither the library, the command nor the Python module links it).
 packages=(build-essential cmake ninja-build pkg-config
   gemmi-dev tao-pegtl-dev zlib1g-dev libdeflate-dev libvtk9-dev libcli11-dev
   googletest libgtest-dev nlohmann-json3-dev libgmp-dev libmpfr-dev libcgal-dev libmimalloc-dev

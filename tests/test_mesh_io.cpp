@@ -1,6 +1,7 @@
-// Mesh files: every writer round-trips through its reader, VTK files carry the atom
-// data, hand-made files in other tools' dialects read correctly, and malformed input
-// gives an error naming the file (and line).
+// Mesh files: every writer round-trips through its reader, legacy VTK files carry the
+// atom data, hand-made files in other tools' dialects read correctly, and malformed input
+// gives an error naming the file (and line). VTK's own reader checks our VTK files in
+// test_mesh_vtp.cpp and test_mesh_vtk_writer.cpp.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -16,18 +17,6 @@
 #include <string>
 #include <vector>
 
-// VTK is linked into molsurf privately, so its include directory is not ours: the
-// versioned prefix finds the top header, whose quoted includes find the rest. (The
-// legacy reader's header includes with <>, so .vtk cell data is checked from the bytes.)
-#include <vtk-9.1/vtkCellData.h>
-#include <vtk-9.1/vtkIntArray.h>
-#include <vtk-9.1/vtkNew.h>
-#include <vtk-9.1/vtkPointData.h>
-#include <vtk-9.1/vtkPolyData.h>
-#include <vtk-9.1/vtkStringArray.h>
-#include <vtk-9.1/vtkXMLPolyDataReader.h>
-
-#include "common/thread_count_scope.hpp"
 #include "mesh/icosphere.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
@@ -210,99 +199,6 @@ TEST_F(MeshIoTest, UntaggedMeshStaysUntaggedWhereTagsAreOptional) {
     write_mesh(dir_ / name, mesh);
     EXPECT_FALSE(read_mesh(dir_ / name).has_tags()) << name;
   }
-}
-
-// ---- VTK cell data --------------------------------------------------------------------
-
-template <class Reader>
-vtkSmartPointer<vtkPolyData> read_with_vtk(const fs::path& file) {
-  vtkNew<Reader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  return reader->GetOutput();
-}
-
-void expect_atom_cell_data(vtkPolyData* polydata, const Mesh& mesh, const std::vector<Atom>& atoms) {
-  ASSERT_NE(polydata, nullptr);
-  ASSERT_EQ(polydata->GetNumberOfCells(), static_cast<vtkIdType>(mesh.face_count()));
-  vtkCellData* cells = polydata->GetCellData();
-  auto* tag = vtkIntArray::SafeDownCast(cells->GetAbstractArray("tag"));
-  auto* serial = vtkIntArray::SafeDownCast(cells->GetAbstractArray("atom_serial"));
-  auto* residue_number = vtkIntArray::SafeDownCast(cells->GetAbstractArray("residue_number"));
-  auto* residue_name = vtkStringArray::SafeDownCast(cells->GetAbstractArray("residue_name"));
-  auto* chain = vtkStringArray::SafeDownCast(cells->GetAbstractArray("chain"));
-  ASSERT_NE(tag, nullptr);
-  ASSERT_NE(serial, nullptr);
-  ASSERT_NE(residue_number, nullptr);
-  ASSERT_NE(residue_name, nullptr);
-  ASSERT_NE(chain, nullptr);
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const auto id = static_cast<vtkIdType>(f);
-    const Atom& atom = atoms[static_cast<std::size_t>(mesh.face_tags[f])];
-    ASSERT_EQ(tag->GetValue(id), mesh.face_tags[f]);
-    ASSERT_EQ(serial->GetValue(id), atom.serial);
-    ASSERT_EQ(residue_number->GetValue(id), atom.residue_number);
-    ASSERT_EQ(residue_name->GetValue(id), atom.residue_name);
-    ASSERT_EQ(chain->GetValue(id), atom.chain);
-  }
-  vtkDataArray* normals = polydata->GetPointData()->GetNormals();
-  ASSERT_NE(normals, nullptr);
-  EXPECT_EQ(normals->GetNumberOfTuples(), static_cast<vtkIdType>(mesh.vertex_count()));
-  // Area-weighted normals of a sphere point away from its centre; written as float32.
-  EXPECT_EQ(normals->GetDataType(), VTK_FLOAT);
-  const std::vector<Vec3> expected = vertex_normals(mesh);
-  for (std::size_t v = 0; v < mesh.vertex_count(); v += 17) {
-    const double* n = normals->GetTuple3(static_cast<vtkIdType>(v));
-    EXPECT_EQ(n[0], static_cast<float>(expected[v].x));
-    EXPECT_EQ(n[1], static_cast<float>(expected[v].y));
-    EXPECT_EQ(n[2], static_cast<float>(expected[v].z));
-    EXPECT_GT(dot(Vec3{n[0], n[1], n[2]}, mesh.vertices[v] - Vec3{1.1, -2.3, 0.7}), 0);
-  }
-}
-
-TEST_F(MeshIoTest, VtpCarriesAtomDataPerFace) {
-  const Mesh mesh = tagged_sphere();
-  const std::vector<Atom> atoms = three_atoms();
-  write_mesh(dir_ / "atoms.vtp", mesh, {.atoms = atoms});
-  EXPECT_NE(slurp(dir_ / "atoms.vtp").find("vtkZLibDataCompressor"), std::string::npos);
-  expect_atom_cell_data(read_with_vtk<vtkXMLPolyDataReader>(dir_ / "atoms.vtp"), mesh, atoms);
-}
-
-// Arrays of many zlib blocks (32 KiB each), compressed in parallel: VTK's own reader and
-// ours get the same points (exactly), triangles and tags, for any thread count.
-TEST_F(MeshIoTest, VtpOfManyBlocksReadsBackExactlyInVtkAndOurs) {
-  Mesh mesh = make_icosphere({1.1, -2.3, 0.7}, 1.7, IcosphereOptions{.frequency = 40, .tag = 0});
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) mesh.face_tags[f] = static_cast<std::int32_t>(f % 7);
-  ASSERT_GT(3 * 4 * mesh.face_count(), 8 * 32768u) << "connectivity should span several blocks";
-  std::string first;
-  for (const int threads : {1, 2}) {
-    const ThreadCountScope scope(threads);
-    write_mesh(dir_ / "big.vtp", mesh);
-    const std::string bytes = slurp(dir_ / "big.vtp");
-    if (first.empty()) first = bytes;
-    EXPECT_EQ(bytes, first) << "the file depends on the thread count";
-  }
-  const vtkSmartPointer<vtkPolyData> vtk = read_with_vtk<vtkXMLPolyDataReader>(dir_ / "big.vtp");
-  ASSERT_EQ(vtk->GetNumberOfPoints(), static_cast<vtkIdType>(mesh.vertex_count()));
-  ASSERT_EQ(vtk->GetNumberOfCells(), static_cast<vtkIdType>(mesh.face_count()));
-  for (std::size_t v = 0; v < mesh.vertex_count(); v += 97) {
-    const double* p = vtk->GetPoint(static_cast<vtkIdType>(v));
-    EXPECT_EQ(Vec3(p[0], p[1], p[2]), mesh.vertices[v]);
-  }
-  auto* tag = vtkIntArray::SafeDownCast(vtk->GetCellData()->GetAbstractArray("tag"));
-  ASSERT_NE(tag, nullptr);
-  for (std::size_t f = 0; f < mesh.face_count(); f += 89) {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    vtk->GetCellPoints(static_cast<vtkIdType>(f), n, ids);
-    ASSERT_EQ(n, 3);
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(ids[k], static_cast<vtkIdType>(mesh.faces[f][k]));
-    EXPECT_EQ(tag->GetValue(static_cast<vtkIdType>(f)), mesh.face_tags[f]);
-  }
-  const Mesh ours = read_mesh(dir_ / "big.vtp");
-  EXPECT_EQ(ours.vertices, mesh.vertices);
-  EXPECT_EQ(ours.faces, mesh.faces);
-  EXPECT_EQ(ours.face_tags, mesh.face_tags);
 }
 
 // Legacy binary field arrays: "NAME 1 COUNT int\n" then COUNT big-endian int32.
