@@ -45,6 +45,8 @@ struct SurfaceCommand {
   double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;
   bool progress = false;  // the progress bar even when stderr is not a terminal
+  std::size_t blocks = 0;  // --blocks N: the surface in N spatial blocks, one after another (0: not)
+  bool merge = false;      // --merge: the blocks glued into one file rather than a .pvtp's pieces
   // Set by add_options: whether an option was given at all (an empty value, as in
   // `-o ""`, is then an error rather than the default).
   const CLI::Option* output_option = nullptr;
