@@ -2,12 +2,16 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string_view>
 #include <string>
 #include <utility>
 
 #include "blocks/block_partition.hpp"
 #include "blocks/block_piece.hpp"
+#include "blocks/piece_bytes.hpp"
 #include "blocks/seam.hpp"
 #include "common/thread_count_scope.hpp"
 #include "molsurf/compute_areas.hpp"
@@ -32,6 +36,91 @@ void refuse_unsupported(const ComputeSurfaceOptions& options) {
     throw Error("--blocks runs the one-pass union (the default --method); the pairwise union is not split into blocks");
   if (options.outer_only) throw Error("--blocks keeps the cavities: drop --outer-only");
   if (options.true_points) throw Error("--blocks does not move vertices onto the true spheres: drop --true-points");
+}
+
+// The counts of one more cleanup (a piece's, or the seams').
+void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned) {
+  if (!result.cleanup) result.cleanup = CleanupStats{};
+  result.cleanup->collapses += cleaned.collapses;
+  result.cleanup->flips += cleaned.flips;
+  result.cleanup->moves += cleaned.moves;
+  result.cleanup->refused += cleaned.refused;
+  result.cleanup->short_edges_before += cleaned.short_edges_before;
+  result.cleanup->short_edges_after += cleaned.short_edges_after;
+}
+
+// The quality of two meshes together, from each one's.
+void combine_quality(Quality& total, const Quality& part) {
+  if (part.faces == 0) return;
+  if (total.faces == 0) {
+    total = part;
+    return;
+  }
+  const double n = static_cast<double>(total.faces), m = static_cast<double>(part.faces);
+  total.mean_min_angle_deg = (total.mean_min_angle_deg * n + part.mean_min_angle_deg * m) / (n + m);
+  total.min_angle_deg = std::min(total.min_angle_deg, part.min_angle_deg);
+  total.max_aspect_ratio = std::max(total.max_aspect_ratio, part.max_aspect_ratio);
+  total.below_1deg += part.below_1deg;
+  total.below_5deg += part.below_5deg;
+  total.faces += part.faces;
+}
+
+// The faces of `mesh` whose atom lies in block `block`, on their own vertices.
+Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, std::size_t block) {
+  Mesh piece;
+  std::vector<Index> vertex_of(mesh.vertices.size(), ~Index{0});
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (block_of[static_cast<std::size_t>(mesh.face_tags[f])] != block) continue;
+    Triangle t = mesh.faces[f];
+    for (Index& v : t) {
+      if (vertex_of[v] == ~Index{0}) {
+        vertex_of[v] = static_cast<Index>(piece.vertices.size());
+        piece.vertices.push_back(mesh.vertices[v]);
+      }
+      v = vertex_of[v];
+    }
+    piece.faces.push_back(t);
+    piece.face_tags.push_back(mesh.face_tags[f]);
+  }
+  return piece;
+}
+
+// Block b's piece: computed, cleaned with its seam frozen, checked but for the seam.
+PieceMessage make_piece(std::span<const Atom> atoms, const BlockPartition& partition, std::size_t b,
+                        const ComputeSurfaceOptions& options, int threads) {
+  PieceMessage m;
+  m.block = b;
+  auto clock = Clock::now();
+  m.stats.atoms = partition.atoms[b].size();
+  m.stats.halo_atoms = partition.halo[b].size();
+  BlockPiece piece = compute_block_piece(block_atoms(atoms, partition, b), options.spheres, threads);
+  m.seconds_union = seconds_since(clock);
+  clock = Clock::now();
+  m.before = mesh_quality(piece.mesh);
+  if (options.cleanup) {
+    // The seam's vertices are shared with the neighbouring pieces: frozen, both sides
+    // keep them where the union put them, and the pieces still glue exactly.
+    const std::vector<std::uint8_t> frozen = seam_vertices(piece.mesh);
+    CleanupOptions cleanup = options.cleanup_options;
+    cleanup.measure_after = false;
+    m.cleanup = improve_surface(piece.mesh, cleanup, frozen);
+  }
+  m.seconds_cleanup = seconds_since(clock);
+  clock = Clock::now();
+  m.stats.seam_edges = seam_edges(piece.mesh).size();
+  MeshCheckOptions check_options;
+  check_options.self_intersections = options.check_self_intersections;
+  const MeshCheck check = check_mesh(piece.mesh, check_options);
+  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
+    std::string text = "block " + std::to_string(b) + " of " + std::to_string(partition.size()) + ": its piece has";
+    for (const std::string& p : problems) text += " " + p + ";";
+    throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});
+  }
+  m.seconds_check = seconds_since(clock);
+  m.stats.seconds = m.seconds_union + m.seconds_cleanup + m.seconds_check;
+  m.mesh = std::move(piece.mesh);
+  m.seam = std::move(piece.seam);
+  return m;
 }
 
 }  // namespace
@@ -76,64 +165,80 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   };
 
   const BlockPartition partition = partition_blocks(atoms, options.spheres, blocked.blocks);
+  report(SurfaceStage::union_, 0, partition.size());
+  std::vector<PieceMessage> messages;
+  BlockExchange* exchange = blocked.exchange;
+  if (exchange == nullptr || exchange->size() <= 1) {
+    for (std::size_t b = 0; b < partition.size(); ++b) {
+      messages.push_back(make_piece(atoms, partition, b, options, result.threads));
+      report(SurfaceStage::union_, b + 1, partition.size());
+    }
+  } else {
+    // Process r makes blocks r, r + size, ...; the first gathers them all (or what went wrong).
+    std::string bytes = "P";
+    try {
+      for (std::size_t b = static_cast<std::size_t>(exchange->rank()); b < partition.size();
+           b += static_cast<std::size_t>(exchange->size()))
+        append_piece(bytes, make_piece(atoms, partition, b, options, result.threads));
+    } catch (const std::exception& e) {
+      bytes = std::string("E") + e.what();
+    }
+    const std::vector<std::string> gathered = exchange->gather(bytes);
+    if (exchange->rank() != 0) {
+      out.root = false;
+      return out;
+    }
+    for (std::size_t k = 0; k < gathered.size(); ++k) {
+      const std::string_view b = gathered[k];
+      if (b.empty() || b[0] != 'P')
+        throw Error("process " + std::to_string(k) + " of " + std::to_string(gathered.size()) + ": " +
+                    std::string(b.empty() ? "no answer" : b.substr(1)));
+      for (PieceMessage& m : read_pieces(b.substr(1))) messages.push_back(std::move(m));
+    }
+    std::sort(messages.begin(), messages.end(),
+              [](const PieceMessage& x, const PieceMessage& y) { return x.block < y.block; });
+    report(SurfaceStage::union_, partition.size(), partition.size());
+  }
+  if (messages.size() != partition.size()) throw std::logic_error("compute_blocked_surface: a block without its piece");
   std::vector<Mesh> pieces;
   std::vector<std::vector<SeamPoint>> seams;
   pieces.reserve(partition.size());
   seams.reserve(partition.size());
   Quality before;
-  report(SurfaceStage::union_, 0, partition.size());
-  for (std::size_t b = 0; b < partition.size(); ++b) {
-    auto clock = Clock::now();
-    BlockStats stats;
-    stats.atoms = partition.atoms[b].size();
-    stats.halo_atoms = partition.halo[b].size();
-    BlockPiece piece = compute_block_piece(block_atoms(atoms, partition, b), options.spheres, result.threads);
-    result.seconds.union_ += seconds_since(clock);
-    clock = Clock::now();
+  for (PieceMessage& m : messages) {
+    combine_quality(before, m.before);
     if (options.cleanup) {
-      // The seam's vertices are shared with the neighbouring pieces: frozen, both sides
-      // keep them where the union put them, and the pieces still glue exactly.
-      const std::vector<std::uint8_t> frozen = seam_vertices(piece.mesh);
-      CleanupOptions cleanup = options.cleanup_options;
-      cleanup.measure_after = false;
-      const CleanupStats cleaned = improve_surface(piece.mesh, cleanup, frozen);
-      if (!result.cleanup) result.cleanup = CleanupStats{};
-      result.cleanup->collapses += cleaned.collapses;
-      result.cleanup->flips += cleaned.flips;
-      result.cleanup->moves += cleaned.moves;
-      result.cleanup->refused += cleaned.refused;
-      result.cleanup->area_before += cleaned.area_before;
-      result.cleanup->area_after += cleaned.area_after;
-      result.cleanup->short_edges_before += cleaned.short_edges_before;
-      result.cleanup->short_edges_after += cleaned.short_edges_after;
+      add_cleanup(result, m.cleanup);
+      result.cleanup->area_before += m.cleanup.area_before;
     }
-    result.seconds.cleanup += seconds_since(clock);
-    clock = Clock::now();
-    stats.seam_edges = seam_edges(piece.mesh).size();
-    MeshCheckOptions check_options;
-    check_options.self_intersections = options.check_self_intersections;
-    const MeshCheck check = check_mesh(piece.mesh, check_options);
-    if (const auto problems = piece_problems(check, stats.seam_edges); !problems.empty()) {
-      std::string text = "block " + std::to_string(b) + " of " + std::to_string(partition.size()) + ": its piece has";
-      for (const std::string& p : problems) text += " " + p + ";";
-      throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});
-    }
-    result.seconds.check += seconds_since(clock);
-    stats.faces = piece.mesh.faces.size();
-    stats.seconds = seconds_since(clock);
-    if (blocked.piece_done) blocked.piece_done(b, piece.mesh);
-    pieces.push_back(std::move(piece.mesh));
-    seams.push_back(std::move(piece.seam));
-    out.blocks.push_back(stats);
-    report(SurfaceStage::union_, b + 1, partition.size());
+    result.seconds.union_ += m.seconds_union;
+    result.seconds.cleanup += m.seconds_cleanup;
+    result.seconds.check += m.seconds_check;
+    out.blocks.push_back(m.stats);
+    pieces.push_back(std::move(m.mesh));
+    seams.push_back(std::move(m.seam));
   }
+  messages = {};
 
   // The seams and every pair of faces from different pieces: the glued surface's check.
   auto clock = Clock::now();
   report(SurfaceStage::check, 0, 1);
-  Mesh glued = glue_pieces(pieces, seams, exact_same_point(atoms, options.spheres, partition.contained));
+  std::vector<std::uint8_t> glued_seam;
+  Mesh glued =
+      glue_pieces(pieces, seams, exact_same_point(atoms, options.spheres, partition.contained), &glued_seam);
   pieces = {};
   seams = {};
+  if (options.cleanup) {
+    // The seams' own cleanup: their slivers, which no piece could touch, with the faces of
+    // both sides in view; everything but a band of two rings around the seams frozen.
+    clock = Clock::now();
+    const std::vector<std::uint8_t> frozen = frozen_beyond(glued, glued_seam, 2);
+    CleanupOptions cleanup = options.cleanup_options;
+    cleanup.measure_after = false;
+    add_cleanup(result, improve_surface(glued, cleanup, frozen));
+    result.seconds.cleanup += seconds_since(clock);
+    clock = Clock::now();
+  }
   MeshCheckOptions check_options;
   check_options.self_intersections = options.check_self_intersections;
   result.check = check_mesh(glued, check_options);
@@ -150,9 +255,20 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
                                     &result.component_shells);
   result.seconds.measures = seconds_since(clock);
   report(SurfaceStage::measures, 1, 1);
-  if (result.cleanup) result.cleanup->after = result.check.quality;
+  if (result.cleanup) {
+    result.cleanup->after = result.check.quality;
+    result.cleanup->area_after = result.check.area;
+  }
   result.quality_after = result.check.quality;
-  result.quality_before = result.cleanup ? result.cleanup->before : result.quality_after;
+  if (result.cleanup) result.cleanup->before = before;
+  result.quality_before = before;
+  // The pieces as written: the checked surface's faces, block by block (a face's block is
+  // its atom's; the seams' cleanup kept every face's atom).
+  for (std::size_t b = 0; b < partition.size(); ++b) {
+    const Mesh piece = faces_of_block(glued, partition.block_of, b);
+    out.blocks[b].faces = piece.faces.size();
+    if (blocked.piece_done) blocked.piece_done(b, piece);
+  }
   result.mesh = std::move(glued);
   result.method = SurfaceMethod::one_pass;
   result.seconds.total = seconds_since(start);

@@ -1,35 +1,41 @@
 #pragma once
 // The surface job over spatial blocks (`molsurf --blocks N`): the atoms cut into blocks
 // (block_partition.hpp), each block's piece computed from its atoms and halo, cleaned with
-// its seam frozen, checked on its own, and handed to the caller as soon as it is done; then
-// the seams matched and the whole surface checked and measured as compute_surface measures
-// one (exact areas, components and cavities joined through the seams).
+// its seam frozen and checked on its own; then the pieces glued along their seams, the
+// seams' slivers cleaned with both sides in view, the whole surface checked and measured as
+// compute_surface measures one (exact areas, components and cavities joined through the
+// seams), and handed back to the caller block by block. The glued surface is held whole:
+// the peak memory is the surface's (the pieces' stream to disk is the step after).
 #include <cstddef>
 #include <functional>
 #include <span>
 #include <vector>
 
+#include "blocks/block_exchange.hpp"
+#include "blocks/piece_bytes.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/mesh.hpp"
 
 namespace molsurf::blocks {
 
-struct BlockStats {
-  std::size_t atoms = 0, halo_atoms = 0, faces = 0, seam_edges = 0;
-  double seconds = 0;  // union, cleanup and check of the piece
-};
 
 struct BlockedSurfaceOptions {
   std::size_t blocks = 1;
-  // Called with each checked piece (face tags: atom indices), block by block, as soon as it
-  // is done. May be empty.
+  // Called with each block's piece of the checked surface (face tags: atom indices), block
+  // by block. May be empty.
   std::function<void(std::size_t block, const Mesh& piece)> piece_done;
+  // Processes that share the job (may be null: this one alone). Each makes its blocks'
+  // pieces (r, r + size, ...); the first glues, checks and measures them.
+  BlockExchange* exchange = nullptr;
 };
 
 struct BlockedSurface {
   ComputedSurface surface;  // mesh: the pieces glued along their seams, checked
   std::vector<BlockStats> blocks;
+  // False on every process of an exchange but the first: it made its pieces and handed
+  // them over; `surface` is empty.
+  bool root = true;
 };
 
 // The SAS and vdW surfaces by the one-pass method (the SES, the pairwise method, outer_only

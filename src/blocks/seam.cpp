@@ -122,7 +122,7 @@ std::vector<SeamPoint> seam_points(const Mesh& mesh, std::span<const surface_det
 }
 
 Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamPoint>> seams,
-                 const SamePoint& same_point) {
+                 const SamePoint& same_point, std::vector<std::uint8_t>* glued_seam) {
   if (seams.size() != pieces.size()) throw std::invalid_argument("glue_pieces: one seam per piece");
   // Every piece's seam vertices with their points.
   std::vector<SeamEntry> entries;
@@ -189,12 +189,14 @@ Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamP
         if (class_vertex[r] == ~Index{0}) {
           class_vertex[r] = next;
           glued.vertices.push_back(entries[first_of[r]].point->position);
+          if (glued_seam) glued_seam->resize(glued.vertices.size(), 0), glued_seam->back() = 1;
         }
         vertex_of[v] = class_vertex[r];
       } else {
         vertex_of[v] = next;
         glued.vertices.push_back(piece.vertices[v]);
       }
+      if (glued_seam) glued_seam->resize(glued.vertices.size(), 0);
     }
     for (std::size_t f = 0; f < piece.faces.size(); ++f) {
       const Triangle& t = piece.faces[f];
@@ -203,6 +205,19 @@ Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamP
     }
   }
   return glued;
+}
+
+std::vector<std::uint8_t> frozen_beyond(const Mesh& mesh, std::span<const std::uint8_t> near, int rings) {
+  std::vector<std::uint8_t> reached(near.begin(), near.end());
+  reached.resize(mesh.vertices.size(), 0);
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<std::uint8_t> next = reached;
+    for (const Triangle& t : mesh.faces)
+      if (reached[t[0]] || reached[t[1]] || reached[t[2]]) next[t[0]] = next[t[1]] = next[t[2]] = 1;
+    reached = std::move(next);
+  }
+  for (auto& r : reached) r = r ? 0 : 1;
+  return reached;
 }
 
 }  // namespace molsurf::blocks

@@ -44,7 +44,12 @@ using SamePoint = std::function<bool(const surface_detail::PointDefinition&, con
 // position; its seam vertices must still be where they were when it was joined).
 // `same_point` is asked only about points with different definitions whose coordinates lie
 // within a few units in the last place.
+// With `on_seam` (may be null): per vertex of the glued mesh, 1 where pieces were glued.
 Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamPoint>> seams,
-                 const SamePoint& same_point);
+                 const SamePoint& same_point, std::vector<std::uint8_t>* on_seam = nullptr);
+
+// Per vertex: 1 unless within `rings` edges of a vertex `near` marks (the vertices a seam's
+// cleanup must leave where they are).
+std::vector<std::uint8_t> frozen_beyond(const Mesh& mesh, std::span<const std::uint8_t> near, int rings);
 
 }  // namespace molsurf::blocks

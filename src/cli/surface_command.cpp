@@ -72,18 +72,20 @@ ComputedSurface compute_with_progress(std::span<const Atom> atoms, ComputeSurfac
 
 // The surface block by block (--blocks), with a progress bar unless quiet; each piece is
 // handed to `piece_done` (may be empty) as soon as it is checked.
-ComputedSurface compute_blocks_with_progress(std::span<const Atom> atoms, ComputeSurfaceOptions options,
-                                             std::size_t blocks, bool quiet, bool force_progress,
-                                             const std::filesystem::path& out,
-                                             const std::function<void(std::size_t, const Mesh&)>& piece_done) {
+// Empty on every process of an MPI launch but the first, which gets the whole surface.
+std::optional<ComputedSurface> compute_blocks_with_progress(
+    std::span<const Atom> atoms, ComputeSurfaceOptions options, std::size_t blocks, blocks::BlockExchange* exchange,
+    bool quiet, bool force_progress, const std::filesystem::path& out,
+    const std::function<void(std::size_t, const Mesh&)>& piece_done) {
   try {
     ProgressBar bar(quiet, force_progress);
     options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
       bar.update(surface_stage_name(stage), done, total);
     };
-    blocks::BlockedSurface blocked =
-        blocks::compute_blocked_surface(atoms, options, {.blocks = blocks, .piece_done = piece_done});
+    blocks::BlockedSurface blocked = blocks::compute_blocked_surface(
+        atoms, options, {.blocks = blocks, .piece_done = piece_done, .exchange = exchange});
     bar.finish();
+    if (!blocked.root) return std::nullopt;
     return std::move(blocked.surface);
   } catch (const SurfaceCheckFailed& failed) {
     if (!quiet)
@@ -179,8 +181,10 @@ int SurfaceCommand::run() const {
   const std::filesystem::path out = surface_output_path(*this);
   // --blocks with -o NAME.pvtp: each block's piece NAME_K.vtp beside the index, every
   // check of a surface file made on the pieces' format.
-  if (merge && blocks == 0) throw Error("--merge glues the pieces of --blocks N: give --blocks as well");
-  const bool pieces = blocks > 0 && out.extension() == ".pvtp";
+  // Under MPI with more than one process, one block each unless --blocks says otherwise.
+  const std::size_t block_count = blocks > 0 ? blocks : exchange && exchange->size() > 1 ? exchange->size() : 0;
+  if (merge && block_count == 0) throw Error("--merge glues the pieces of --blocks N: give --blocks as well");
+  const bool pieces = block_count > 0 && out.extension() == ".pvtp";
   if (pieces && merge)
     throw Error("--merge writes one surface file: give -o NAME.vtp (or another mesh format), not " + out.string());
   if (pieces && split_components) throw Error("--split-components writes whole surfaces: give --merge with it");
@@ -188,7 +192,7 @@ int SurfaceCommand::run() const {
   // Every output checked before any work: a wrong path costs nothing.
   std::vector<OutputRequest> outputs = requested_outputs(*this, mesh_out);
   if (pieces) {
-    for (std::size_t k = 1; k < blocks; ++k) outputs.push_back({blocks::piece_path(out, k), "-o", true});
+    for (std::size_t k = 1; k < block_count; ++k) outputs.push_back({blocks::piece_path(out, k), "-o", true});
     outputs.push_back({out, "-o"});
   }
   if (!formats.empty()) outputs.push_back({kStandardOutput, "--format"});
@@ -220,10 +224,13 @@ int SurfaceCommand::run() const {
     const SurfaceFileOptions file{.ascii = ascii, .msms_header = !no_header, .threads = threads};
     files.add_mesh(blocks::piece_path(out, block), piece, surface_write_options(kind(), spheres, s.atoms, structure, file));
   };
-  const ComputedSurface computed =
-      blocks > 0 ? compute_blocks_with_progress(s.atoms, compute_options(), blocks, quiet, progress, out,
-                                                pieces ? write_piece : std::function<void(std::size_t, const Mesh&)>{})
-                 : compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
+  std::optional<ComputedSurface> surface_or_none =
+      block_count > 0
+          ? compute_blocks_with_progress(s.atoms, compute_options(), block_count, exchange, quiet, progress, out,
+                                         pieces ? write_piece : std::function<void(std::size_t, const Mesh&)>{})
+          : compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
+  if (!surface_or_none) return 0;  // another process of the launch writes the outputs
+  const ComputedSurface& computed = *surface_or_none;
   const Mesh& surface = computed.mesh;
   report.seconds.surface = computed.seconds.union_;
   report.seconds.cleanup = computed.seconds.cleanup;
@@ -254,7 +261,7 @@ int SurfaceCommand::run() const {
       report.exact ? exact_atom_area(computed.exact, outer_only) : measures.atom_area;
 
   if (pieces)
-    files.add_text(out, blocks::pvtp_index(out, blocks));
+    files.add_text(out, blocks::pvtp_index(out, block_count));
   else
     add_surface_files(*this, out, surface, written, surface_check_options(computed, threads), inputs, outputs, files);
   const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);

@@ -128,7 +128,7 @@ class Cleaner {
   bool keeps_edges_open(const MeshEdit& e) const;
   bool within_region(const MeshEdit& e) const;
   bool fits(const Option& o) {
-    return editor_.spares_frozen(o.edit) && keeps_edges_open(o.edit) && editor_.crosses_nothing(o.edit);
+    return editor_.spares_frozen(o.edit) && editor_.keeps_frozen_edges(o.edit) && keeps_edges_open(o.edit) && editor_.crosses_nothing(o.edit);
   }
   bool try_best(std::vector<Option>& options);
   std::uint32_t component(const MeshEdit& e) const;
