@@ -82,6 +82,8 @@ int main(int argc, char** argv) {
       return 2;
     }
     if (!subcommand) surface.cap_threads();
+    if (message_passing && message_passing->size() > 1 && subcommand)
+      throw molsurf::Error("under mpirun, molsurf makes one surface in blocks; run check, boolean and batch alone");
     surface.exchange = message_passing.get();
     if (message_passing && message_passing->rank() != 0) surface.quiet = true;  // the first process reports
     const int status = check_app->parsed()     ? check.run()

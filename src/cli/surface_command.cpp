@@ -164,6 +164,11 @@ int SurfaceCommand::run() const {
   // The rules between the options, as the library has them (a ParameterError names the option).
   validate(compute_options());
   if (!formats.empty() && all_models) throw Error("--format writes one model: drop --all-models, or give --model N");
+  // Blocks make one mesh; several MPI processes share nothing else.
+  const bool launched = exchange && exchange->size() > 1;
+  if ((blocks > 0 || launched) && (areas_only || all_models || (!formats.empty() && output_option->count() == 0)))
+    throw Error(std::string(launched ? "under mpirun, molsurf makes one surface in blocks" : "--blocks makes one mesh") +
+                ": drop --areas-only, --all-models and --format without -o");
   if (areas_only) return run_areas_only();
   if (!formats.empty() && output_option->count() == 0) {
     // Numbers only, as FreeSASA gives them: no mesh unless -o asks for one.
