@@ -16,7 +16,8 @@ packages=(build-essential cmake ninja-build pkg-config
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-gemmi
   python3-matplotlib python3-meshio python3-mdtraj
   python3-venv python3-pip python3-setuptools python3-wheel
-  gmsh libgmsh-dev tetgen xvfb python3-vtk9 freesasa)
+  gmsh libgmsh-dev tetgen xvfb python3-vtk9 freesasa
+  libopenmpi-dev openmpi-bin)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -9,6 +9,7 @@
 
 #include <span>
 
+#include "blocks/block_exchange.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/compute_surface.hpp"
@@ -45,6 +46,11 @@ struct SurfaceCommand {
   double max_memory_gb = 0;  // 0: the machine's memory
   bool quiet = false;
   bool progress = false;  // the progress bar even when stderr is not a terminal
+  std::size_t blocks = 0;  // --blocks N: the surface in N spatial blocks, one after another (0: not)
+  bool merge = false;      // --merge: the blocks glued into one file rather than a .pvtp's pieces
+  // The processes of an MPI launch (null: this one alone); with more than one, the blocks
+  // are theirs (one each unless --blocks says otherwise).
+  blocks::BlockExchange* exchange = nullptr;
   // Set by add_options: whether an option was given at all (an empty value, as in
   // `-o ""`, is then an error rather than the default).
   const CLI::Option* output_option = nullptr;

@@ -1,11 +1,13 @@
 // molsurf: the command line. It only parses options and calls the library.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <stdexcept>
 
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
+#include "cli/mpi/message_passing.hpp"
 #include "cli/validators.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
@@ -16,6 +18,8 @@ int main(int argc, char** argv) {
   using namespace molsurf::cli;
   molsurf::guard_standard_streams();  // before anything opens a file
   use_large_pages();
+  // Under mpirun or srun: the surface's blocks shared by the launched processes.
+  const std::unique_ptr<molsurf::blocks::BlockExchange> message_passing = start_message_passing(argc, argv);
   CLI::App app{
       "molsurf " MOLSURF_VERSION " - exact, watertight molecular surfaces.\n"
       "The solvent-accessible surface of a structure is the union of one sphere per atom\n"
@@ -78,6 +82,10 @@ int main(int argc, char** argv) {
       return 2;
     }
     if (!subcommand) surface.cap_threads();
+    if (message_passing && message_passing->size() > 1 && subcommand)
+      throw molsurf::Error("under mpirun, molsurf makes one surface in blocks; run check, boolean and batch alone");
+    surface.exchange = message_passing.get();
+    if (message_passing && message_passing->rank() != 0) surface.quiet = true;  // the first process reports
     const int status = check_app->parsed()     ? check.run()
                        : boolean_app->parsed() ? boolean.run()
                        : batch_app->parsed()   ? batch.run()

@@ -4,11 +4,14 @@
 #include <omp.h>
 
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <span>
 #include <thread>
 
+#include "blocks/blocked_surface.hpp"
+#include "blocks/pvtp_index.hpp"
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_bar.hpp"
@@ -63,6 +66,30 @@ ComputedSurface compute_with_progress(std::span<const Atom> atoms, ComputeSurfac
     return computed;
   } catch (const SurfaceCheckFailed& failed) {
     print_notes(failed.notes());
+    throw Error(out.string() + ": not written: " + failed.what());
+  }
+}
+
+// The surface block by block (--blocks), with a progress bar unless quiet; each piece is
+// handed to `piece_done` (may be empty) as soon as it is checked.
+// Empty on every process of an MPI launch but the first, which gets the whole surface.
+std::optional<ComputedSurface> compute_blocks_with_progress(
+    std::span<const Atom> atoms, ComputeSurfaceOptions options, std::size_t blocks, blocks::BlockExchange* exchange,
+    bool quiet, bool force_progress, const std::filesystem::path& out,
+    const std::function<void(std::size_t, const Mesh&)>& piece_done) {
+  try {
+    ProgressBar bar(quiet, force_progress);
+    options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
+      bar.update(surface_stage_name(stage), done, total);
+    };
+    blocks::BlockedSurface blocked = blocks::compute_blocked_surface(
+        atoms, options, {.blocks = blocks, .piece_done = piece_done, .exchange = exchange});
+    bar.finish();
+    if (!blocked.root) return std::nullopt;
+    return std::move(blocked.surface);
+  } catch (const SurfaceCheckFailed& failed) {
+    if (!quiet)
+      for (const std::string& note : failed.notes()) std::cerr << "molsurf: note: " << note << "\n";
     throw Error(out.string() + ": not written: " + failed.what());
   }
 }
@@ -140,6 +167,11 @@ int SurfaceCommand::run() const {
   if (stern_probe_option->count() > 0 && stern_option->count() == 0)
     throw Error("--stern-probe: give --stern FILE as well (the Stern layer's file)");
   if (!formats.empty() && all_models) throw Error("--format writes one model: drop --all-models, or give --model N");
+  // Blocks make one mesh; several MPI processes share nothing else.
+  const bool launched = exchange && exchange->size() > 1;
+  if ((blocks > 0 || launched) && (areas_only || all_models || (!formats.empty() && output_option->count() == 0)))
+    throw Error(std::string(launched ? "under mpirun, molsurf makes one surface in blocks" : "--blocks makes one mesh") +
+                ": drop --areas-only, --all-models and --format without -o");
   if (areas_only) return run_areas_only();
   if (!formats.empty() && output_option->count() == 0) {
     // Numbers only, as FreeSASA gives them: no mesh unless -o asks for one.
@@ -155,12 +187,26 @@ int SurfaceCommand::run() const {
     return run_areas_only();
   }
   const std::filesystem::path out = surface_output_path(*this);
+  // --blocks with -o NAME.pvtp: each block's piece NAME_K.vtp beside the index, every
+  // check of a surface file made on the pieces' format.
+  // Under MPI with more than one process, one block each unless --blocks says otherwise.
+  const std::size_t block_count = blocks > 0 ? blocks : exchange && exchange->size() > 1 ? exchange->size() : 0;
+  if (merge && block_count == 0) throw Error("--merge glues the pieces of --blocks N: give --blocks as well");
+  const bool pieces = block_count > 0 && out.extension() == ".pvtp";
+  if (pieces && merge)
+    throw Error("--merge writes one surface file: give -o NAME.vtp (or another mesh format), not " + out.string());
+  if (pieces && split_components) throw Error("--split-components writes whole surfaces: give --merge with it");
+  const std::filesystem::path mesh_out = pieces ? blocks::piece_path(out, 0) : out;
   // Every output checked before any work: a wrong path costs nothing.
-  std::vector<OutputRequest> outputs = requested_outputs(*this, out);
+  std::vector<OutputRequest> outputs = requested_outputs(*this, mesh_out);
+  if (pieces) {
+    for (std::size_t k = 1; k < block_count; ++k) outputs.push_back({blocks::piece_path(out, k), "-o", true});
+    outputs.push_back({out, "-o"});
+  }
   if (!formats.empty()) outputs.push_back({kStandardOutput, "--format"});
   const std::vector<std::filesystem::path> inputs{structure, read.radius_file};
   check_output_paths(inputs, outputs);
-  check_format_options(*this, out);
+  check_format_options(*this, mesh_out);
   // --format's reports stand alone on standard output, as FreeSASA's do.
   const bool silent = quiet || !formats.empty();
   std::ostream& text = text_stream(outputs);
@@ -180,7 +226,19 @@ int SurfaceCommand::run() const {
   if (!silent) text << format_read_report(s.report) << format_sphere_plan(plan, spheres);
   flush_standard_output();  // shown before the long work, and a broken standard output stops it
 
-  const ComputedSurface computed = compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
+  // All or nothing: every file is complete before any replaces an old one.
+  OutputFiles files;
+  const auto write_piece = [&](std::size_t block, const Mesh& piece) {
+    const SurfaceFileOptions file{.ascii = ascii, .msms_header = !no_header, .threads = threads};
+    files.add_mesh(blocks::piece_path(out, block), piece, surface_write_options(kind(), spheres, s.atoms, structure, file));
+  };
+  std::optional<ComputedSurface> surface_or_none =
+      block_count > 0
+          ? compute_blocks_with_progress(s.atoms, compute_options(), block_count, exchange, quiet, progress, out,
+                                         pieces ? write_piece : std::function<void(std::size_t, const Mesh&)>{})
+          : compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
+  if (!surface_or_none) return 0;  // another process of the launch writes the outputs
+  const ComputedSurface& computed = *surface_or_none;
   const Mesh& surface = computed.mesh;
   report.seconds.surface = computed.seconds.union_;
   report.seconds.cleanup = computed.seconds.cleanup;
@@ -188,7 +246,7 @@ int SurfaceCommand::run() const {
 
   // Lossy formats (.vert, .stl): the surface is checked again as the file will hold it.
   auto clock = std::chrono::steady_clock::now();
-  const WrittenCheck written = checked_as_written(out, computed, s.atoms);
+  const WrittenCheck written = checked_as_written(mesh_out, computed, s.atoms);
   report.seconds.check += seconds_since(clock);
 
   clock = std::chrono::steady_clock::now();
@@ -210,9 +268,10 @@ int SurfaceCommand::run() const {
   const std::vector<double> atom_area =
       report.exact ? exact_atom_area(computed.exact, outer_only) : measures.atom_area;
 
-  // All or nothing: every file is complete before any replaces an old one.
-  OutputFiles files;
-  add_surface_files(*this, out, surface, written, surface_check_options(computed, threads), inputs, outputs, files);
+  if (pieces)
+    files.add_text(out, blocks::pvtp_index(out, block_count));
+  else
+    add_surface_files(*this, out, surface, written, surface_check_options(computed, threads), inputs, outputs, files);
   if (computed.stern) report.stern = add_stern_file(*this, *computed.stern, s.atoms, files);
   const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));

@@ -252,6 +252,22 @@ bool MeshEditor::spares_frozen(const MeshEdit& e) const {
   return true;
 }
 
+bool MeshEditor::keeps_frozen_edges(const MeshEdit& e) const {
+  if (s_.frozen_.empty()) return true;
+  auto edges_exist = [&](const Triangle& t) {
+    for (int k = 0; k < 3; ++k) {
+      const Index a = t[k], b = t[(k + 1) % 3];
+      if (frozen(a) && frozen(b) && faces_on_edge(a, b).empty()) return false;
+    }
+    return true;
+  };
+  for (std::size_t k = 0; k < e.faces.size(); ++k)
+    if (!e.removes(k) && !edges_exist(e.after[k])) return false;
+  for (const Triangle& t : e.added)
+    if (!edges_exist(t)) return false;
+  return true;
+}
+
 void MeshEditor::commit(const MeshEdit& e) {
   if (!spares_frozen(e)) throw std::invalid_argument("MeshEditor::commit: the edit moves or removes a frozen vertex");
   if (s_.grid_ && !e.added.empty())

@@ -133,6 +133,10 @@ class MeshEditor {
   std::size_t refused_frozen() const { return refused_frozen_; }
   // Whether the edit neither moves a frozen vertex nor merges one away.
   bool spares_frozen(const MeshEdit& e) const;
+  // Whether every edge between two frozen vertices in the faces the edit makes is an edge
+  // already: frozen vertices join faces beyond the mesh, which may join them by an edge of
+  // their own that this mesh cannot see (a spatial block's seam).
+  bool keeps_frozen_edges(const MeshEdit& e) const;
 
   // Makes the edit (one that spares the frozen vertices; std::invalid_argument otherwise),
   // recording it while the journal is open.

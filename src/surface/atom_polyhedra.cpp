@@ -5,6 +5,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
 #include <tuple>
 
 #include "arrangement/contained_spheres.hpp"
@@ -97,27 +98,62 @@ std::optional<bool> settled_by_balls(const std::array<geometry::Interval, 3>& bo
   return std::nullopt;  // also for a NaN bound
 }
 
-AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options) {
+namespace {
+
+void sphere_sizes(std::span<const Atom> atoms, const SphereOptions& options, std::vector<Vec3>& centre,
+                  std::vector<int>& frequency, std::vector<double>& radius) {
   const std::size_t n = atoms.size();
-  centre_.resize(n);
-  scale_.resize(n);
-  circumradius_.resize(n);
-  inradius_.resize(n);
-  template_of_.resize(n);
-  contained_.assign(n, 0);
-  std::vector<int> frequency(n);
-  std::vector<double> radius(n);
+  centre.resize(n);
+  frequency.resize(n);
+  radius.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    centre_[i] = atoms[i].centre;
+    centre[i] = atoms[i].centre;
     frequency[i] = sphere_frequency(atoms[i], options);
     radius[i] = sphere_radius(atoms[i], options);
   }
+}
+
+}  // namespace
+
+AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options) {
+  std::vector<int> frequency;
+  std::vector<double> radius;
+  sphere_sizes(atoms, options, centre_, frequency, radius);
   // Atoms whose sphere another atom's ball holds (copies, the smaller of concentric
   // atoms) add nothing to the union of the true balls: decided exactly on the sphere
   // radii, as the arrangement decides it, so the mesh and the exact areas drop the same.
   // First, so that no template is built for them alone (10 000 concentric atoms of
   // different radii would need hundreds).
   const std::vector<std::uint32_t> container = arrangement::sphere_containers(centre_, radius);
+  build(atoms, options, container, frequency, radius);
+}
+
+AtomPolyhedra::AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options,
+                             std::span<const std::uint8_t> contained) {
+  if (contained.size() != atoms.size()) throw std::invalid_argument("AtomPolyhedra: one containment flag per atom");
+  std::vector<int> frequency;
+  std::vector<double> radius;
+  sphere_sizes(atoms, options, centre_, frequency, radius);
+  // A contained atom's holder may lie outside these atoms: it takes the first free atom's
+  // shape instead (contained atoms are never built, only sized).
+  std::uint32_t free_atom = 0;
+  while (free_atom < atoms.size() && contained[free_atom]) ++free_atom;
+  std::vector<std::uint32_t> container(atoms.size());
+  for (std::uint32_t i = 0; i < atoms.size(); ++i)
+    container[i] = !contained[i] || free_atom == atoms.size() ? i : free_atom;
+  build(atoms, options, container, frequency, radius);
+  for (std::size_t i = 0; i < atoms.size(); ++i) contained_[i] = contained[i] != 0;
+}
+
+void AtomPolyhedra::build(std::span<const Atom> atoms, const SphereOptions& options,
+                          std::span<const std::uint32_t> container, std::span<const int> frequency,
+                          std::span<const double> radius) {
+  const std::size_t n = atoms.size();
+  scale_.resize(n);
+  circumradius_.resize(n);
+  inradius_.resize(n);
+  template_of_.resize(n);
+  contained_.assign(n, 0);
   std::map<int, std::uint16_t> template_index;
   for (std::size_t i = 0; i < n; ++i) {
     contained_[i] = container[i] != i;

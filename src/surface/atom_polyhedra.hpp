@@ -60,6 +60,10 @@ std::optional<bool> settled_by_balls(const std::array<geometry::Interval, 3>& bo
 class AtomPolyhedra {
  public:
   AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options);
+  // The same polyhedra with containment given (contained[i] != 0: atom i is held by another
+  // atom's ball), as decided on a larger set of atoms: a spatial block and its halo hold
+  // only part of each halo atom's surroundings, so they take the whole structure's decision.
+  AtomPolyhedra(std::span<const Atom> atoms, const SphereOptions& options, std::span<const std::uint8_t> contained);
 
   std::size_t size() const { return centre_.size(); }
   const Vec3& centre(std::size_t atom) const { return centre_[atom]; }
@@ -81,6 +85,10 @@ class AtomPolyhedra {
   std::size_t face_count() const;  // of all polyhedra but the contained atoms'
 
  private:
+  // container[i]: the atom whose ball holds atom i's sphere (i itself when none).
+  void build(std::span<const Atom> atoms, const SphereOptions& options, std::span<const std::uint32_t> container,
+             std::span<const int> frequency, std::span<const double> radius);
+
   std::vector<PolyhedronTemplate> templates_;
   std::vector<std::uint16_t> template_of_;
   std::vector<Vec3> centre_;

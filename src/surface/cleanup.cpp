@@ -7,6 +7,7 @@
 #include <memory>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
 
 #include <omp.h>
@@ -249,12 +250,16 @@ class Sweep {
 
 }  // namespace
 
-CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options) {
+CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options) { return improve_surface(mesh, options, {}); }
+
+CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options, std::span<const std::uint8_t> frozen) {
+  if (!frozen.empty() && frozen.size() != mesh.vertices.size())
+    throw std::invalid_argument("improve_surface: one frozen flag per vertex");
   CleanupStats stats;
   stats.before = mesh_quality(mesh);
   stats.area_before = surface_area(mesh);
   if (!mesh.faces.empty()) {
-    CleanupShared shared(mesh, options, stats.area_before);
+    CleanupShared shared(mesh, options, stats.area_before, frozen);
     Sweep(shared).run(stats);
     if (stats.collapses > 0) {
       keep_alive_faces(mesh, shared.editable.alive_faces());

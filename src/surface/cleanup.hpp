@@ -2,6 +2,9 @@
 // Surface improvement (paper §2.5), compute_surface's cleanup stage: the slivers that the
 // union leaves removed by edits that keep the surface valid (the options and counts:
 // include/molsurf/cleanup.hpp).
+#include <cstdint>
+#include <span>
+
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh.hpp"
 
@@ -33,5 +36,8 @@ namespace molsurf {
 // apart that no two edits made at once touch or read the same faces), each region's
 // faces worst first; the result does not depend on the thread count.
 CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options = {});
+// The same with `frozen[v]` (one flag per vertex) for the vertices no edit may move or merge
+// away: where the mesh joins faces beyond it (a spatial block's seam, src/blocks/).
+CleanupStats improve_surface(Mesh& mesh, const CleanupOptions& options, std::span<const std::uint8_t> frozen);
 
 }  // namespace molsurf

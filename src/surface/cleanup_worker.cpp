@@ -9,8 +9,9 @@
 
 namespace molsurf::surface_cleanup {
 
-CleanupShared::CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area)
-    : m(mesh), options(opts), editable(mesh) {
+CleanupShared::CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area,
+                             std::span<const std::uint8_t> frozen)
+    : m(mesh), options(opts), editable(mesh, frozen) {
   // The lengths in parallel, their sum in face order: the same mean for any thread count.
   std::vector<double> lengths(m.faces.size());
   const auto nf = static_cast<std::int64_t>(m.faces.size());

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -23,7 +24,8 @@ namespace molsurf::surface_cleanup {
 // far apart (see Sweep), so nothing here is locked.
 struct CleanupShared {
   // `area`: the mesh's surface area, which the caller has measured.
-  CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area);
+  // `frozen` (empty: none): per vertex, whether no edit may move or merge it away.
+  CleanupShared(Mesh& mesh, const CleanupOptions& opts, double area, std::span<const std::uint8_t> frozen = {});
 
   static double tetrahedron_volume(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c) {
     return dot(a - o, cross(b - o, c - o)) / 6;
@@ -125,7 +127,9 @@ class Cleaner {
   bool evaluate(Option& o, bool must_improve = true) const;
   bool keeps_edges_open(const MeshEdit& e) const;
   bool within_region(const MeshEdit& e) const;
-  bool fits(const Option& o) { return keeps_edges_open(o.edit) && editor_.crosses_nothing(o.edit); }
+  bool fits(const Option& o) {
+    return editor_.spares_frozen(o.edit) && editor_.keeps_frozen_edges(o.edit) && keeps_edges_open(o.edit) && editor_.crosses_nothing(o.edit);
+  }
   bool try_best(std::vector<Option>& options);
   std::uint32_t component(const MeshEdit& e) const;
 

@@ -252,17 +252,37 @@ std::size_t count_open_edges(const Mesh& mesh, int threads) {
 }  // namespace
 
 void join_pieces(std::vector<AtomPieces> pieces, const AtomPolyhedra& polyhedra, int threads, Mesh& mesh,
-                 OnePassStats& stats) {
+                 OnePassStats& stats, std::vector<VertexOrigin>* origins) {
   // The steps run in parallel where they are not linear scans, and number points as a
   // serial scan would (in order of first appearance). Buffers go as soon as their step is
   // done, to keep the peak memory down.
   const SequenceRanges ranges = sequence_ranges(pieces, stats);
   DistinctPoints distinct = distinct_points(pieces, representatives_by_definition(pieces, ranges, threads));
   join_faces(pieces, ranges, distinct.point_of, threads, mesh);
+  // Distinct points are numbered in order of first appearance: the k-th is first seen at
+  // the k-th position whose point is new.
+  std::vector<VertexOrigin> point_origin;
+  if (origins) {
+    point_origin.resize(distinct.points.size());
+    std::vector<std::uint8_t> seen(distinct.points.size(), 0);
+    for (std::uint32_t i = 0, s = 0; i < pieces.size(); ++i)
+      for (std::uint32_t k = 0; k < pieces[i].points.size(); ++k, ++s) {
+        const std::uint32_t p = distinct.point_of[s];
+        if (seen[p]) continue;
+        seen[p] = 1;
+        point_origin[p] = {distinct.points[p], i, k};
+      }
+  }
   distinct.point_of = {};
   pieces = {};
   const std::vector<std::uint32_t> same = merge_equal_values(polyhedra, threads, distinct);
   const std::vector<std::uint32_t> vertex_of = number_vertices(same, distinct.coordinates, threads, mesh);
+  if (origins) {
+    // A vertex's root point is its class's first: the lowest distinct point.
+    origins->assign(mesh.vertices.size(), {});
+    for (std::uint32_t p = 0; p < same.size(); ++p)
+      if (same[p] == p) (*origins)[vertex_of[p]] = point_origin[p];
+  }
   stats.merged_points = distinct.points.size() - mesh.vertices.size();
   repair_rounded_points(distinct.points, vertex_of, mesh);
   stats.open_edges = count_open_edges(mesh, threads);

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,12 +61,13 @@ SurfaceSizeEstimate estimate_union_size(const AtomPolyhedra& polyhedra, const Ne
   return estimate;
 }
 
-// Every atom's polyhedron trimmed by its neighbours, all atoms in parallel. `progress` (may
-// be empty) is called from thread 0 every 256 atoms, and once at the end.
+// Every atom's polyhedron trimmed by its neighbours, all atoms in parallel (only those
+// `trimmed` marks when it is not empty). `progress` (may be empty) is called from thread 0
+// every 256 atoms, and once at the end.
 std::vector<one_pass::AtomPieces> trim_atoms(const AtomPolyhedra& polyhedra, const NeighbourList& neighbours,
                                              int threads,
                                              const std::function<void(std::size_t, std::size_t)>& progress,
-                                             const CancelFlag* cancel) {
+                                             const CancelFlag* cancel, std::span<const std::uint8_t> trimmed = {}) {
   const std::size_t atom_count = polyhedra.size();
   const auto n = static_cast<std::int64_t>(atom_count);
   std::vector<one_pass::AtomPieces> pieces(atom_count);
@@ -78,7 +80,7 @@ std::vector<one_pass::AtomPieces> trim_atoms(const AtomPolyhedra& polyhedra, con
     for (std::int64_t i = 0; i < n; ++i) {
       // Skipped rather than thrown once cancelled: an exception per remaining atom would
       // cost more than the atoms.
-      if (cancel_requested(cancel)) continue;
+      if (cancel_requested(cancel) || (!trimmed.empty() && !trimmed[i])) continue;
       errors.run(i, [&] { pieces[i] = trimmer.trim(static_cast<std::uint32_t>(i)); });
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (progress && omp_get_thread_num() == 0 && finished % 256 == 0) progress(finished, atom_count);
@@ -116,6 +118,28 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
   result.stats.contained_atoms = polyhedra.contained_count();
   result.stats.neighbour_pairs = neighbours.atoms.size() / 2;
   result.stats.faces_in = polyhedra.face_count();
+  return result;
+}
+
+OnePassResult one_pass_partial_union(std::span<const Atom> atoms, std::span<const std::uint8_t> contained,
+                                     std::span<const std::uint8_t> trimmed, const SphereOptions& options, int threads) {
+  if (contained.size() != atoms.size() || trimmed.size() != atoms.size())
+    throw std::invalid_argument("one_pass_partial_union: one containment and one trim flag per atom");
+  OnePassResult result;
+  auto start = Clock::now();
+  const AtomPolyhedra polyhedra(atoms, options, contained);
+  const NeighbourList neighbours = find_neighbours(polyhedra);
+  std::vector<one_pass::AtomPieces> pieces = trim_atoms(polyhedra, neighbours, threads, {}, nullptr, trimmed);
+  result.stats.seconds_trim = seconds_since(start);
+  start = Clock::now();
+  one_pass::join_pieces(std::move(pieces), polyhedra, threads, result.mesh, result.stats, &result.origins);
+  result.stats.seconds_join = seconds_since(start);
+  for (std::size_t i = 0; i < atoms.size(); ++i)
+    if (trimmed[i]) {
+      ++result.stats.atoms;
+      result.stats.contained_atoms += polyhedra.contained(i) ? 1 : 0;
+      if (!polyhedra.contained(i)) result.stats.faces_in += polyhedra.shape(i).unit.faces.size();
+    }
   return result;
 }
 

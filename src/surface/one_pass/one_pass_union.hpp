@@ -26,10 +26,12 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "molsurf/atoms.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/surface.hpp"
+#include "surface/one_pass/join.hpp"
 #include "surface/solvent_accessible_surface.hpp"
 
 namespace molsurf::surface_detail {
@@ -37,6 +39,7 @@ namespace molsurf::surface_detail {
 struct OnePassResult {
   Mesh mesh;  // face tags: atom index
   OnePassStats stats;
+  std::vector<one_pass::VertexOrigin> origins;  // per vertex (one_pass_partial_union only)
 };
 
 // `progress` (may be empty) is called from one thread with (atoms done, atoms in all).
@@ -48,6 +51,15 @@ OnePassResult one_pass_union(std::span<const Atom> atoms, const SphereOptions& o
                              const std::function<void(std::size_t, std::size_t)>& progress = {},
                              const std::function<void(const SurfaceSizeEstimate&)>& check_size = {},
                              std::uint64_t estimate_size_above = 0, const CancelFlag* cancel = nullptr);
+
+// Part of a union: the faces of the atoms that `trimmed` marks (one flag per atom), each
+// trimmed by its neighbours among all `atoms`, with containment given (one flag per atom,
+// decided on a larger set: AtomPolyhedra's second constructor). The faces are those the
+// whole union gives these atoms when `atoms` hold every neighbour of a marked atom; the
+// mesh is open where the marked atoms meet unmarked ones (stats.open_edges counts those
+// edges). Face tags index `atoms`; `origins` is filled.
+OnePassResult one_pass_partial_union(std::span<const Atom> atoms, std::span<const std::uint8_t> contained,
+                                     std::span<const std::uint8_t> trimmed, const SphereOptions& options, int threads);
 
 // What a one-pass union with `open_edges` directed edges without their reverse is: a bug,
 // said as such wherever a caller stops on it or falls back.

@@ -1,0 +1,287 @@
+#include "blocks/blocked_surface.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string_view>
+#include <string>
+#include <utility>
+
+#include "blocks/block_partition.hpp"
+#include "blocks/block_piece.hpp"
+#include "blocks/piece_bytes.hpp"
+#include "blocks/seam.hpp"
+#include "common/thread_count_scope.hpp"
+#include "molsurf/compute_areas.hpp"
+#include "molsurf/error.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/parameters.hpp"
+#include "molsurf/resource_limits.hpp"
+#include "surface/cleanup.hpp"
+
+namespace molsurf::blocks {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Rings of edges around a piece's seam that its own cleanup leaves alone.
+constexpr int kPieceSeamBand = 3;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void refuse_unsupported(const ComputeSurfaceOptions& options) {
+  if (options.surface == SurfaceKind::ses)
+    throw Error("--blocks computes the solvent-accessible and van der Waals surfaces; the SES is not split into blocks");
+  if (options.method != SurfaceMethod::one_pass)
+    throw Error("--blocks runs the one-pass union (the default --method); the pairwise union is not split into blocks");
+  if (options.outer_only) throw Error("--blocks keeps the cavities: drop --outer-only");
+  if (options.true_points) throw Error("--blocks does not move vertices onto the true spheres: drop --true-points");
+  if (options.stern_probe)
+    throw Error("--blocks makes one surface: drop --stern (the Stern layer is the SAS at --probe R, in a run of its own)");
+}
+
+// The counts of one more cleanup (a piece's, or the seams').
+void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned) {
+  if (!result.cleanup) result.cleanup = CleanupStats{};
+  result.cleanup->collapses += cleaned.collapses;
+  result.cleanup->flips += cleaned.flips;
+  result.cleanup->moves += cleaned.moves;
+  result.cleanup->refused += cleaned.refused;
+  result.cleanup->short_edges_before += cleaned.short_edges_before;
+  result.cleanup->short_edges_after += cleaned.short_edges_after;
+}
+
+// The quality of two meshes together, from each one's.
+void combine_quality(Quality& total, const Quality& part) {
+  if (part.faces == 0) return;
+  if (total.faces == 0) {
+    total = part;
+    return;
+  }
+  const double n = static_cast<double>(total.faces), m = static_cast<double>(part.faces);
+  total.mean_min_angle_deg = (total.mean_min_angle_deg * n + part.mean_min_angle_deg * m) / (n + m);
+  total.min_angle_deg = std::min(total.min_angle_deg, part.min_angle_deg);
+  total.max_aspect_ratio = std::max(total.max_aspect_ratio, part.max_aspect_ratio);
+  total.below_1deg += part.below_1deg;
+  total.below_5deg += part.below_5deg;
+  total.faces += part.faces;
+}
+
+// The faces of `mesh` whose atom lies in block `block`, on their own vertices.
+Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, std::size_t block) {
+  Mesh piece;
+  std::vector<Index> vertex_of(mesh.vertices.size(), ~Index{0});
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (block_of[static_cast<std::size_t>(mesh.face_tags[f])] != block) continue;
+    Triangle t = mesh.faces[f];
+    for (Index& v : t) {
+      if (vertex_of[v] == ~Index{0}) {
+        vertex_of[v] = static_cast<Index>(piece.vertices.size());
+        piece.vertices.push_back(mesh.vertices[v]);
+      }
+      v = vertex_of[v];
+    }
+    piece.faces.push_back(t);
+    piece.face_tags.push_back(mesh.face_tags[f]);
+  }
+  return piece;
+}
+
+// Block b's piece: computed, cleaned with its seam frozen, checked but for the seam.
+PieceMessage make_piece(std::span<const Atom> atoms, const BlockPartition& partition, std::size_t b,
+                        const ComputeSurfaceOptions& options, int threads) {
+  PieceMessage m;
+  m.block = b;
+  auto clock = Clock::now();
+  m.stats.atoms = partition.atoms[b].size();
+  m.stats.halo_atoms = partition.halo[b].size();
+  BlockPiece piece = compute_block_piece(block_atoms(atoms, partition, b), options.spheres, threads);
+  m.seconds_union = seconds_since(clock);
+  clock = Clock::now();
+  m.before = mesh_quality(piece.mesh);
+  if (options.cleanup) {
+    // The seam's vertices are shared with the neighbouring pieces: frozen, both sides
+    // keep them where the union put them, and the pieces still glue exactly. So are the
+    // vertices near them: an edit there could cross a neighbouring piece's face, which this
+    // piece cannot see (the capsid 1f2n in 4 blocks, with the seam alone frozen: 14 crossing
+    // pairs); the seams' cleanup, which sees both sides, cleans that band.
+    std::vector<std::uint8_t> frozen = frozen_beyond(piece.mesh, seam_vertices(piece.mesh), kPieceSeamBand);
+    for (std::uint8_t& f : frozen) f = f ? 0 : 1;
+    CleanupOptions cleanup = options.cleanup_options;
+    cleanup.measure_after = false;
+    m.cleanup = improve_surface(piece.mesh, cleanup, frozen);
+  }
+  m.seconds_cleanup = seconds_since(clock);
+  clock = Clock::now();
+  m.stats.seam_edges = seam_edges(piece.mesh).size();
+  MeshCheckOptions check_options;
+  check_options.self_intersections = options.check_self_intersections;
+  const MeshCheck check = check_mesh(piece.mesh, check_options);
+  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
+    std::string text = "block " + std::to_string(b) + " of " + std::to_string(partition.size()) + ": its piece has";
+    for (const std::string& p : problems) text += " " + p + ";";
+    throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});
+  }
+  m.seconds_check = seconds_since(clock);
+  m.stats.seconds = m.seconds_union + m.seconds_cleanup + m.seconds_check;
+  m.mesh = std::move(piece.mesh);
+  m.seam = std::move(piece.seam);
+  return m;
+}
+
+}  // namespace
+
+std::vector<std::string> piece_problems(const MeshCheck& check, std::size_t seam_edges) {
+  std::vector<std::string> problems;
+  if (check.boundary_edges != seam_edges)
+    problems.push_back(std::to_string(check.boundary_edges) + " boundary edges where the seam has " +
+                       std::to_string(seam_edges));
+  const std::pair<std::size_t, const char*> counts[] = {
+      {check.nonmanifold_edges, "non-manifold edges"},   {check.misoriented_edges, "misoriented edges"},
+      {check.degenerate_faces, "degenerate faces"},      {check.duplicate_faces, "duplicate faces"},
+      {check.intersecting_pairs, "intersecting face pairs"}, {check.contact_pairs, "touching face pairs"},
+      {check.non_finite_vertices, "non-finite vertices"}};
+  for (const auto& [count, what] : counts)
+    if (count > 0) problems.push_back(std::to_string(count) + " " + what);
+  return problems;
+}
+
+BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested,
+                                       const BlockedSurfaceOptions& blocked) {
+  const auto start = Clock::now();
+  validate(requested);
+  refuse_unsupported(requested);
+  if (blocked.blocks == 0) throw Error("--blocks: at least 1 block");
+  ComputeSurfaceOptions options = requested;
+  if (options.surface == SurfaceKind::vdw) {
+    options.surface = SurfaceKind::sas;
+    options.spheres.probe = 0;
+  }
+  check_spheres(atoms, options.spheres);
+  check_sphere_resolution(atoms, options.spheres);
+  check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
+
+  BlockedSurface out;
+  ComputedSurface& result = out.surface;
+  result.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  const ThreadCountScope thread_count(result.threads);
+  auto report = [&](SurfaceStage stage, std::size_t done, std::size_t total) {
+    throw_if_cancelled(options.cancel);
+    if (options.progress) options.progress(stage, done, total);
+  };
+
+  const BlockPartition partition = partition_blocks(atoms, options.spheres, blocked.blocks);
+  report(SurfaceStage::union_, 0, partition.size());
+  std::vector<PieceMessage> messages;
+  BlockExchange* exchange = blocked.exchange;
+  if (exchange == nullptr || exchange->size() <= 1) {
+    for (std::size_t b = 0; b < partition.size(); ++b) {
+      messages.push_back(make_piece(atoms, partition, b, options, result.threads));
+      report(SurfaceStage::union_, b + 1, partition.size());
+    }
+  } else {
+    // Process r makes blocks r, r + size, ...; the first gathers them all (or what went wrong).
+    std::string bytes = "P";
+    try {
+      for (std::size_t b = static_cast<std::size_t>(exchange->rank()); b < partition.size();
+           b += static_cast<std::size_t>(exchange->size()))
+        append_piece(bytes, make_piece(atoms, partition, b, options, result.threads));
+    } catch (const std::exception& e) {
+      bytes = std::string("E") + e.what();
+    }
+    const std::vector<std::string> gathered = exchange->gather(bytes);
+    if (exchange->rank() != 0) {
+      out.root = false;
+      return out;
+    }
+    for (std::size_t k = 0; k < gathered.size(); ++k) {
+      const std::string_view b = gathered[k];
+      if (b.empty() || b[0] != 'P')
+        throw Error("process " + std::to_string(k) + " of " + std::to_string(gathered.size()) + ": " +
+                    std::string(b.empty() ? "no answer" : b.substr(1)));
+      for (PieceMessage& m : read_pieces(b.substr(1))) messages.push_back(std::move(m));
+    }
+    std::sort(messages.begin(), messages.end(),
+              [](const PieceMessage& x, const PieceMessage& y) { return x.block < y.block; });
+    report(SurfaceStage::union_, partition.size(), partition.size());
+  }
+  if (messages.size() != partition.size()) throw std::logic_error("compute_blocked_surface: a block without its piece");
+  std::vector<Mesh> pieces;
+  std::vector<std::vector<SeamPoint>> seams;
+  pieces.reserve(partition.size());
+  seams.reserve(partition.size());
+  Quality before;
+  for (PieceMessage& m : messages) {
+    combine_quality(before, m.before);
+    if (options.cleanup) {
+      add_cleanup(result, m.cleanup);
+      result.cleanup->area_before += m.cleanup.area_before;
+    }
+    result.seconds.union_ += m.seconds_union;
+    result.seconds.cleanup += m.seconds_cleanup;
+    result.seconds.check += m.seconds_check;
+    out.blocks.push_back(m.stats);
+    pieces.push_back(std::move(m.mesh));
+    seams.push_back(std::move(m.seam));
+  }
+  messages = {};
+
+  // The seams and every pair of faces from different pieces: the glued surface's check.
+  auto clock = Clock::now();
+  report(SurfaceStage::check, 0, 1);
+  std::vector<std::uint8_t> glued_seam;
+  Mesh glued =
+      glue_pieces(pieces, seams, exact_same_point(atoms, options.spheres, partition.contained), &glued_seam);
+  pieces = {};
+  seams = {};
+  if (options.cleanup) {
+    // The seams' own cleanup: their slivers, which no piece could touch, with the faces of
+    // both sides in view; everything but a band two rings wider than the pieces left frozen.
+    clock = Clock::now();
+    const std::vector<std::uint8_t> frozen = frozen_beyond(glued, glued_seam, kPieceSeamBand + 2);
+    CleanupOptions cleanup = options.cleanup_options;
+    cleanup.measure_after = false;
+    add_cleanup(result, improve_surface(glued, cleanup, frozen));
+    result.seconds.cleanup += seconds_since(clock);
+    clock = Clock::now();
+  }
+  MeshCheckOptions check_options;
+  check_options.self_intersections = options.check_self_intersections;
+  result.check = check_mesh(glued, check_options);
+  result.seconds.check += seconds_since(clock);
+  report(SurfaceStage::check, 1, 1);
+  if (!result.check.valid())
+    throw SurfaceCheckFailed(std::move(result.check), std::move(glued), {"the glued blocks failed their check"});
+
+  clock = Clock::now();
+  report(SurfaceStage::measures, 0, 1);
+  const bool exact = options.exact_areas;
+  if (exact) result.exact = compute_areas(atoms, options.spheres).arrangement;
+  result.measures = measure_surface(glued, result.check, atoms.size(), exact ? &result.exact : nullptr,
+                                    &result.component_shells);
+  result.seconds.measures = seconds_since(clock);
+  report(SurfaceStage::measures, 1, 1);
+  if (result.cleanup) {
+    result.cleanup->after = result.check.quality;
+    result.cleanup->area_after = result.check.area;
+  }
+  result.quality_after = result.check.quality;
+  if (result.cleanup) result.cleanup->before = before;
+  result.quality_before = before;
+  // The pieces as written: the checked surface's faces, block by block (a face's block is
+  // its atom's; the seams' cleanup kept every face's atom).
+  for (std::size_t b = 0; b < partition.size(); ++b) {
+    const Mesh piece = faces_of_block(glued, partition.block_of, b);
+    out.blocks[b].faces = piece.faces.size();
+    if (blocked.piece_done) blocked.piece_done(b, piece);
+  }
+  result.mesh = std::move(glued);
+  result.method = SurfaceMethod::one_pass;
+  result.seconds.total = seconds_since(start);
+  return out;
+}
+
+}  // namespace molsurf::blocks

@@ -1,0 +1,51 @@
+#pragma once
+// The surface job over spatial blocks (`molsurf --blocks N`): the atoms cut into blocks
+// (block_partition.hpp), each block's piece computed from its atoms and halo, cleaned with
+// its seam frozen and checked on its own; then the pieces glued along their seams, the
+// seams' slivers cleaned with both sides in view, the whole surface checked and measured as
+// compute_surface measures one (exact areas, components and cavities joined through the
+// seams), and handed back to the caller block by block. The glued surface is held whole:
+// the peak memory is the surface's (the pieces' stream to disk is the step after).
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "blocks/block_exchange.hpp"
+#include "blocks/piece_bytes.hpp"
+#include "molsurf/atoms.hpp"
+#include "molsurf/compute_surface.hpp"
+#include "molsurf/mesh.hpp"
+
+namespace molsurf::blocks {
+
+
+struct BlockedSurfaceOptions {
+  std::size_t blocks = 1;
+  // Called with each block's piece of the checked surface (face tags: atom indices), block
+  // by block. May be empty.
+  std::function<void(std::size_t block, const Mesh& piece)> piece_done;
+  // Processes that share the job (may be null: this one alone). Each makes its blocks'
+  // pieces (r, r + size, ...); the first glues, checks and measures them.
+  BlockExchange* exchange = nullptr;
+};
+
+struct BlockedSurface {
+  ComputedSurface surface;  // mesh: the pieces glued along their seams, checked
+  std::vector<BlockStats> blocks;
+  // False on every process of an exchange but the first: it made its pieces and handed
+  // them over; `surface` is empty.
+  bool root = true;
+};
+
+// The SAS and vdW surfaces by the one-pass method (the SES, the pairwise method, outer_only
+// and true_points are refused with molsurf::Error). Throws SurfaceCheckFailed when a piece
+// or the glued surface fails its check.
+BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
+                                       const BlockedSurfaceOptions& blocked);
+
+// What a piece must be: its own check passed but for the seam, which is its only boundary
+// (one line per problem; empty when it is sound).
+std::vector<std::string> piece_problems(const MeshCheck& check, std::size_t seam_edges);
+
+}  // namespace molsurf::blocks

@@ -1,0 +1,38 @@
+#pragma once
+// A block's piece as bytes, to travel from the process that computed it to the one that
+// glues the pieces (block_exchange.hpp): its mesh (vertices, faces, atom tags) and its seam
+// points, every number as its exact bytes (the glue compares coordinates exactly).
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "blocks/seam.hpp"
+#include "molsurf/cleanup.hpp"
+#include "molsurf/mesh.hpp"
+
+namespace molsurf::blocks {
+
+// A piece's numbers as the report sums them.
+struct BlockStats {
+  std::size_t atoms = 0, halo_atoms = 0, faces = 0, seam_edges = 0;
+  double seconds = 0;  // union, cleanup and check of the piece
+};
+
+struct PieceMessage {
+  std::size_t block = 0;
+  Mesh mesh;
+  std::vector<SeamPoint> seam;
+  BlockStats stats;
+  Quality before;         // of the piece before its cleanup
+  CleanupStats cleanup;   // its cleanup's counts
+  double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
+};
+
+// Appends `piece` to `out`.
+void append_piece(std::string& out, const PieceMessage& piece);
+// The pieces `bytes` holds, one after another; std::invalid_argument for bytes that
+// append_piece did not write.
+std::vector<PieceMessage> read_pieces(std::string_view bytes);
+
+}  // namespace molsurf::blocks
