@@ -202,6 +202,11 @@ TEST(BlockedSurface, RefusesWhatItDoesNotSplit) {
   options = {};
   options.method = SurfaceMethod::pairwise;
   EXPECT_THROW(compute_blocked_surface(atoms, options, {.blocks = 2}), Error);
+  options = {};
+  options.stern_probe = 2.0;
+  EXPECT_THROW(compute_blocked_surface(atoms, options, {.blocks = 2}), Error);
+  options = {};
+  EXPECT_NO_THROW(compute_blocked_surface(atoms, options, {.blocks = 2}));
 }
 
 // Pieces read back from files: vertices at the same coordinates are one (the pieces of a
