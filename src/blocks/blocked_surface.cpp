@@ -20,6 +20,7 @@
 #include "molsurf/parameters.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "surface/cleanup.hpp"
+#include "surface/surface_job_options.hpp"
 
 namespace molsurf::blocks {
 
@@ -155,14 +156,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   validate(requested);
   refuse_unsupported(requested);
   if (blocked.blocks == 0) throw Error("--blocks: at least 1 block");
-  ComputeSurfaceOptions options = requested;
-  if (options.surface == SurfaceKind::vdw) {
-    options.surface = SurfaceKind::sas;
-    options.spheres.probe = 0;
-  }
-  check_spheres(atoms, options.spheres);
-  check_sphere_resolution(atoms, options.spheres);
-  check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
+  const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, requested);
 
   BlockedSurface out;
   ComputedSurface& result = out.surface;

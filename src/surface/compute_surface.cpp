@@ -16,6 +16,7 @@
 #include "surface/cleanup.hpp"
 #include "surface/one_pass/one_pass_union.hpp"
 #include "surface/solvent_accessible_surface.hpp"
+#include "surface/surface_job_options.hpp"
 #include "surface/true_points.hpp"
 
 namespace molsurf {
@@ -214,17 +215,7 @@ void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& s
 
 ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
   const auto start = std::chrono::steady_clock::now();
-  validate(requested);
-  // The van der Waals surface is the accessible one at probe 0.
-  ComputeSurfaceOptions options = requested;
-  if (options.surface == SurfaceKind::vdw) {
-    options.surface = SurfaceKind::sas;
-    options.spheres.probe = 0;
-  }
-  check_spheres(atoms, options.spheres);
-  check_sphere_resolution(atoms, options.spheres);
-  // Before any sphere is built: a typo in the density must not run the machine out of memory.
-  check_sphere_resources(options.source, atoms, options.spheres, options.max_sphere_faces);
+  const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, requested);
   ComputedSurface result;
   result.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   // Every stage's parallel loops (union, cleanup, check) use the same team size.
