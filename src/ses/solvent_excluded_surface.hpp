@@ -40,5 +40,8 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
 double probe_spacing(double density);
 // The longest segment of a meridian arc at this density.
 double arc_spacing(double density);
+// Edges of the SES shorter than this are collapsed by its cleanup (0.3 / sqrt(density)
+// angstrom: 0.21 A at density 2, where an even mesh's edge is 0.76 A).
+double ses_min_edge_length(double density);
 
 }  // namespace molsurf::ses_detail

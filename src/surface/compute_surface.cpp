@@ -105,7 +105,7 @@ class Pipeline {
       // (docs/ses.md).
       if (options_.surface == SurfaceKind::ses)
         cleanup_options.min_edge_length =
-            std::max(cleanup_options.min_edge_length, 0.3 / std::sqrt(options_.spheres.density));
+            std::max(cleanup_options.min_edge_length, ses_detail::ses_min_edge_length(options_.spheres.density));
       attempt.cleanup = improve_surface(attempt.mesh, cleanup_options);
       seconds_.cleanup += seconds_since(clock);
       report(SurfaceStage::cleanup, 1, 1);
