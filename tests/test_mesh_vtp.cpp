@@ -27,6 +27,7 @@
 #include "molsurf/error.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
+#include "mesh_io_samples.hpp"
 
 namespace fs = std::filesystem;
 using namespace molsurf;
@@ -62,27 +63,8 @@ class VtpTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// A closed sphere made of several atoms' patches: tag = face index mod 3.
-Mesh tagged_sphere() {
-  Mesh mesh = make_icosphere({1.1, -2.3, 0.7}, 1.7, IcosphereOptions{.frequency = 4, .tag = 0});
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) mesh.face_tags[f] = static_cast<std::int32_t>(f % 3);
-  return mesh;
-}
-
-std::vector<Atom> three_atoms() {
-  std::vector<Atom> atoms(3);
-  const char* residues[] = {"ALA", "GLY", "HEM"};
-  const char* chains[] = {"A", "B", "AB"};
-  for (int i = 0; i < 3; ++i) {
-    atoms[i].centre = {1.1 + 0.1 * i, -2.3, 0.7};
-    atoms[i].radius = 1.5 + 0.1 * i;
-    atoms[i].serial = 100 + i;
-    atoms[i].residue_number = 7 * (i + 1);
-    atoms[i].residue_name = residues[i];
-    atoms[i].chain = chains[i];
-  }
-  return atoms;
-}
+using molsurf::testing::tagged_sphere;
+using molsurf::testing::three_atoms;
 
 // Five points; a vertex cell, a quad, a triangle and a strip of 3 triangles, so that cell
 // data runs over verts before polys before strips. Tag of cell c: 10 + c.
