@@ -738,6 +738,12 @@ PYBIND11_MODULE(molsurf, m) {
   // scheduler) must not leave the write's temporary; signals Python handles or ignores
   // itself (SIGINT, SIGPIPE, SIGXFSZ) are left to it.
   molsurf::remove_temporaries_on_signals();
+  // pybind11 2.10 fills its table of NumPy's C API in a function-local static on first use,
+  // importing numpy.core.multiarray inside it. An import lets other threads take the GIL, so
+  // two Python threads making their first molsurf calls at once deadlock: one waits for the
+  // GIL inside the static, the other holds the GIL and waits for the static. Filled here, at
+  // import, it is never filled concurrently.
+  py::detail::npy_api::get();
   m.doc() =
       "Exact, watertight molecular surfaces (libmolsurf from Python).\n\n"
       "Lengths are in angstrom (A), areas in A^2, volumes in A^3. Arrays are NumPy arrays:\n"

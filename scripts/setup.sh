@@ -14,7 +14,7 @@ packages=(build-essential cmake ninja-build pkg-config
   gemmi-dev tao-pegtl-dev zlib1g-dev libdeflate-dev libvtk9-dev libcli11-dev
   googletest libgtest-dev nlohmann-json3-dev libgmp-dev libmpfr-dev libcgal-dev libmimalloc-dev
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-gemmi
-  python3-matplotlib python3-meshio python3-mdtraj
+  python3-matplotlib python3-meshio python3-mdtraj python3-dask snakemake
   python3-venv python3-pip python3-setuptools python3-wheel
   gmsh libgmsh-dev tetgen xvfb python3-vtk9 freesasa
   libopenmpi-dev openmpi-bin)

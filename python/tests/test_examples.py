@@ -1,6 +1,7 @@
 """The examples under examples/ run, and what they write is checked against the library."""
 import csv
 import os
+import shutil
 import subprocess
 import sys
 
@@ -87,3 +88,43 @@ def test_md_interop_frames_from_mdtraj_or_mdanalysis(source_dir, data_dir, tmp_p
     for frame in (0, 19):
         model = molsurf.read_structure(data_dir / "1j8k.cif", model=frame + 1, hydrogens=True, keep_water=True)
         assert float(rows[frame][1]) == pytest.approx(molsurf.areas(model).area, abs=0.02)
+
+
+def test_sweep_with_dask_one_row_per_structure_and_failures_recorded(source_dir, data_dir, tmp_path):
+    pytest.importorskip("dask")
+    bad = tmp_path / "broken.pdb"
+    bad.write_text("not a structure\n")
+    files = [data_dir / "1crn.pdb", data_dir / "1ubq.pdb", bad]
+    out = run_example(source_dir, "sweep_dask.py", tmp_path, *files, "-o", tmp_path / "sweep.csv", "--workers", 2)
+    assert "3 structures, 1 failed" in out
+    with open(tmp_path / "sweep.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [row["file"] for row in rows] == [str(f) for f in files]
+    for row, path in zip(rows[:2], files[:2]):
+        expected = molsurf.areas(path)
+        assert row["status"] == "ok"
+        assert float(row["area"]) == pytest.approx(expected.area, abs=1e-3)
+        assert float(row["volume"]) == pytest.approx(expected.volume, abs=1e-3)
+        assert int(row["atoms"]) == len(expected.area_per_atom)
+    assert rows[2]["status"].startswith("failed: ")
+
+
+def test_sweep_with_snakemake_one_job_per_structure(source_dir, data_dir, tmp_path, cli):
+    snakemake = shutil.which("snakemake")
+    if snakemake is None:
+        pytest.skip("snakemake not installed (Debian: snakemake)")
+    structures = tmp_path / "pdb"
+    structures.mkdir()
+    for name in ["1crn.pdb", "1ubq.pdb"]:
+        shutil.copy(data_dir / name, structures / name)
+    run = subprocess.run([snakemake, "-s", str(source_dir / "examples" / "Snakefile"), "-j", "2", "--config",
+                          f"structures={structures}/", f"molsurf={cli}", f"out={tmp_path / 'out'}/"],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr[-2000:]
+    with open(tmp_path / "out" / "summary.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [os.path.basename(row["file"]) for row in rows] == ["1crn.pdb", "1ubq.pdb"]
+    for row in rows:
+        expected = molsurf.areas(row["file"])
+        assert float(row["area"]) == pytest.approx(expected.area, rel=1e-12)
+        assert (tmp_path / "out" / (os.path.basename(row["file"])[:-4] + ".vtp")).stat().st_size > 0
