@@ -22,6 +22,7 @@
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 #include "mesh_io_samples.hpp"
+#include "scratch_directory.hpp"
 
 namespace fs = std::filesystem;
 using namespace molsurf;
@@ -44,20 +45,8 @@ using molsurf::testing::three_atoms;
 
 class MeshIoTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "molsurf_mesh_io_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   static void put(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
-  static std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
+  static std::string slurp(const fs::path& file) { return molsurf::testing::file_bytes(file); }
   // The message of the molsurf::Error that `action` throws ("" when it throws none).
   template <class Action>
   static std::string error_of(Action action) {
@@ -69,7 +58,8 @@ class MeshIoTest : public ::testing::Test {
     return "";
   }
 
-  fs::path dir_;
+  molsurf::testing::ScratchDirectory scratch_{"molsurf_mesh_io"};
+  const fs::path dir_ = scratch_.path();
 };
 
 // ---- round trips --------------------------------------------------------------------

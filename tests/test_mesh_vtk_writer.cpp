@@ -31,29 +31,19 @@
 #include "molsurf/compute_surface.hpp"
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
+#include "scratch_directory.hpp"
 
 namespace fs = std::filesystem;
 using namespace molsurf;
 
 namespace {
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
+using molsurf::testing::file_bytes;
 
 class VtkWriterTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "molsurf_vtk_writer_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path dir_;
+  molsurf::testing::ScratchDirectory scratch_{"molsurf_vtk_writer"};
+  const fs::path dir_ = scratch_.path();
 };
 
 // The PolyData molsurf handed to VTK's writer before it had its own: double points, 32-bit
@@ -120,7 +110,7 @@ std::string vtk_writer_bytes(const fs::path& file, const Mesh& mesh, const std::
   writer->SetInputData(reference_polydata(mesh, atoms));
   writer->SetFileName(file.c_str());
   EXPECT_EQ(writer->Write(), 1);
-  return slurp(file);
+  return file_bytes(file);
 }
 
 // "" when equal; otherwise where they first differ, with a few bytes of each.
@@ -213,7 +203,7 @@ void expect_as_vtk_writes_it(const fs::path& dir, const Mesh& mesh, const std::v
   write_mesh(ours, mesh, {.atoms = atoms});
   const std::string expected = vtk_writer_bytes(dir / "vtk.vtk", mesh, atoms);
   ASSERT_FALSE(expected.empty());
-  ASSERT_EQ(difference(slurp(ours), expected), "");
+  ASSERT_EQ(difference(file_bytes(ours), expected), "");
   expect_read_back(ours, mesh, atoms);
 }
 
@@ -250,7 +240,7 @@ TEST_F(VtkWriterTest, TetrahedronWithoutTagsHasNoCellData) {
   Mesh mesh = tetrahedron();
   mesh.face_tags.clear();
   expect_as_vtk_writes_it(dir_, mesh);
-  EXPECT_EQ(slurp(dir_ / "ours.vtk").find("CELL_DATA"), std::string::npos);
+  EXPECT_EQ(file_bytes(dir_ / "ours.vtk").find("CELL_DATA"), std::string::npos);
 }
 
 TEST_F(VtkWriterTest, TetrahedronWithAtomsAndAnUntaggedFace) {
