@@ -72,13 +72,13 @@ int main(int argc, char** argv) {
               "residues > 10 A^2 within 2%% | surface s |\n|---:|:---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (double density : densities)
     for (bool corrected : {false, true}) {
-      SurfaceOptions o;
+      SphereUnionOptions o;
       o.spheres.density = density;
       o.spheres.probe = probe;
       o.spheres.area_corrected = corrected;
       if (density_only) o.spheres.min_density_radius = 0;
       const auto t1 = std::chrono::steady_clock::now();
-      SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+      SphereUnion r = solvent_accessible_surface(s.atoms, o);
       improve_surface(r.mesh);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
       const double area = surface_area(r.mesh), volume = signed_volume(r.mesh);

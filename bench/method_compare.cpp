@@ -19,7 +19,7 @@ int main(int argc, char** argv){
     st.atoms, st.contained_atoms, st.neighbour_pairs, st.faces_in, st.faces_inside, st.faces_whole, st.faces_cut, st.crossings, st.open_edges, r.mesh.faces.size(), r.mesh.vertices.size(), st.seconds_trim, st.seconds_join, t1);
   printf("area %.12g volume %.12g\n", surface_area(r.mesh), signed_volume(r.mesh));
   if (getenv("PAIR")) {
-    SurfaceOptions o; o.spheres=so; o.threads=threads; o.method=SurfaceMethod::pairwise;
+    SphereUnionOptions o; o.spheres=so; o.threads=threads; o.method=SurfaceMethod::pairwise;
     auto p = solvent_accessible_surface(s.atoms, o);
     printf("pairwise faces %zu area %.12g volume %.12g  rel %.3g %.3g\n", p.mesh.faces.size(), surface_area(p.mesh), signed_volume(p.mesh),
       surface_area(r.mesh)/surface_area(p.mesh)-1, signed_volume(r.mesh)/signed_volume(p.mesh)-1);

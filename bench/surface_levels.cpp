@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: surface_levels STRUCTURE [--threads N] [--density D] [--probe P]\n");
     return 2;
   }
-  molsurf::SurfaceOptions options;
+  molsurf::SphereUnionOptions options;
   options.method = molsurf::SurfaceMethod::pairwise;  // the method with merge levels
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
     if (flag == "--probe") options.spheres.probe = std::atof(argv[i + 1]);
   }
   const molsurf::Structure structure = molsurf::read_structure(argv[1]);
-  const molsurf::SurfaceResult result = molsurf::solvent_accessible_surface(structure.atoms, options);
+  const molsurf::SphereUnion result = molsurf::solvent_accessible_surface(structure.atoms, options);
   std::printf("%s: %zu atoms, %zu faces, %d threads, union %.3f s (levels 0-%zu in subtrees: %.3f s)\n\n", argv[1],
               structure.atoms.size(), result.mesh.faces.size(),
               options.threads > 0 ? options.threads : omp_get_max_threads(), result.seconds.union_levels,

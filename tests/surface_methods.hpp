@@ -18,16 +18,16 @@ namespace molsurf::testing {
 
 inline ::testing::AssertionResult methods_agree(std::span<const Atom> atoms, const SphereOptions& spheres,
                                                 int threads = 2) {
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres = spheres;
   o.threads = threads;
   o.method = SurfaceMethod::one_pass;
-  const SurfaceResult one = solvent_accessible_surface(atoms, o);
+  const SphereUnion one = solvent_accessible_surface(atoms, o);
   if (one.one_pass.open_edges > 0)
     return ::testing::AssertionFailure() << "one-pass: " << one.one_pass.open_edges << " open edges";
   if (auto v = valid_surface(one.mesh); !v) return ::testing::AssertionFailure() << "one-pass: " << v.message();
   o.method = SurfaceMethod::pairwise;
-  const SurfaceResult two = solvent_accessible_surface(atoms, o);
+  const SphereUnion two = solvent_accessible_surface(atoms, o);
   if (auto v = valid_surface(two.mesh); !v) return ::testing::AssertionFailure() << "pairwise: " << v.message();
   const double a1 = surface_area(one.mesh), a2 = surface_area(two.mesh);
   const double v1 = signed_volume(one.mesh), v2 = signed_volume(two.mesh);

@@ -311,7 +311,7 @@ TEST(Cleanup, FixesACapInAPlaneWithoutLeavingIt) {
 
 TEST(Cleanup, MeetsTheQualityTargetsOnCrambin) {
   const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
-  SurfaceResult r = solvent_accessible_surface(s.atoms, {});
+  SphereUnion r = solvent_accessible_surface(s.atoms, {});
   Mesh again = r.mesh;
   const CleanupStats stats = improve_surface(r.mesh);
   EXPECT_TRUE(check_mesh(r.mesh).valid());
@@ -358,7 +358,7 @@ double sharpest_opening_deg(const Mesh& m) {
 // 0.1 degree) when only each face's own turn was bounded.
 TEST(Cleanup, FoldsNoTwoFacesOntoEachOther) {
   const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres.probe = 0;
   Mesh m = solvent_accessible_surface(s.atoms, o).mesh;
   ASSERT_GE(sharpest_opening_deg(m), 1.0);  // the union has none

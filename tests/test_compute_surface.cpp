@@ -38,7 +38,7 @@ bool same_mesh(const Mesh& a, const Mesh& b) {
 // check, measures. The one call must give exactly this surface and these numbers.
 TEST(ComputeSurface, EqualsTheStagesRunOneByOneOnCrambin) {
   const std::vector<Atom>& atoms = crambin().atoms;
-  SurfaceOptions surface_options;
+  SphereUnionOptions surface_options;
   Mesh expected = solvent_accessible_surface(atoms, surface_options).mesh;
   const CleanupStats cleanup = improve_surface(expected);
   const MeshCheck check = check_mesh(expected);
@@ -166,7 +166,7 @@ TEST(ComputeSurface, CleanupOff) {
   EXPECT_EQ(r.seconds.cleanup, 0);
   EXPECT_EQ(r.quality_before.below_5deg, r.quality_after.below_5deg);
   EXPECT_EQ(r.quality_before.min_angle_deg, r.quality_after.min_angle_deg);
-  const Mesh union_only = solvent_accessible_surface(crambin().atoms, SurfaceOptions{}).mesh;
+  const Mesh union_only = solvent_accessible_surface(crambin().atoms, SphereUnionOptions{}).mesh;
   EXPECT_TRUE(same_mesh(r.mesh, union_only));
   const ComputedSurface cleaned = compute_surface(crambin().atoms);
   EXPECT_NEAR(cleaned.measures.area, r.measures.area, 1e-3 * r.measures.area);  // the cleanup's area budget
@@ -222,7 +222,7 @@ TEST(SurfaceSizeEstimate, IsNearTheUnionsFaceCount) {
   const Structure haemoglobin = read_structure(kData + "/pdb/2hhb.pdb");
   for (const Structure* s : {&crambin(), &haemoglobin})
     for (double probe : {0.0, 1.4}) {
-      SurfaceOptions options;
+      SphereUnionOptions options;
       options.spheres.probe = probe;
       std::vector<SurfaceSizeEstimate> seen;
       options.check_size = [&seen](const SurfaceSizeEstimate& e) { seen.push_back(e); };
@@ -238,7 +238,7 @@ TEST(SurfaceSizeEstimate, IsNearTheUnionsFaceCount) {
 }
 
 TEST(SurfaceSizeEstimate, IsSkippedWhenTheSpheresAreFew) {
-  SurfaceOptions options;
+  SphereUnionOptions options;
   bool called = false;
   options.check_size = [&called](const SurfaceSizeEstimate&) { called = true; };
   options.estimate_size_above = 1'000'000'000;

@@ -79,9 +79,9 @@ TEST(ContainedAtoms, TenThousandConcentricAtomsGiveOneSphereAtEveryProbe) {
     }
     EXPECT_EQ(all.measures.atom_area[largest], one.measures.atom_area[0]);
 
-    SurfaceOptions pass;
+    SphereUnionOptions pass;
     pass.spheres = options.spheres;
-    const SurfaceResult trimmed = solvent_accessible_surface(atoms, pass);
+    const SphereUnion trimmed = solvent_accessible_surface(atoms, pass);
     EXPECT_EQ(trimmed.one_pass.contained_atoms, atoms.size() - 1);
     EXPECT_EQ(trimmed.one_pass.neighbour_pairs, 0u);
   }
@@ -92,10 +92,10 @@ TEST(ContainedAtoms, ThePairwiseUnionDropsTheSameAtoms) {
   std::vector<Atom> atoms = concentric_atoms(largest);
   atoms.resize(400);
   atoms.push_back(atom_at({4, -3.5, 0.375}, 1.7));  // one atom apart, overlapping the pile
-  SurfaceOptions options;
-  const SurfaceResult one_pass = solvent_accessible_surface(atoms, options);
+  SphereUnionOptions options;
+  const SphereUnion one_pass = solvent_accessible_surface(atoms, options);
   options.method = SurfaceMethod::pairwise;
-  const SurfaceResult pairwise = solvent_accessible_surface(atoms, options);
+  const SphereUnion pairwise = solvent_accessible_surface(atoms, options);
   EXPECT_EQ(pairwise.merges, 1u);  // the pile's largest and the atom apart
   std::vector<std::int32_t> a = one_pass.mesh.face_tags, b = pairwise.mesh.face_tags;
   std::sort(a.begin(), a.end());

@@ -52,15 +52,15 @@ INSTANTIATE_TEST_SUITE_P(SegmentsRingsRotation, Steinmetz,
 // one-pass union refuses it plainly (too many traces on one face).
 TEST(HugeProbe, PairwiseGivesAValidSurfaceOnePassAPlainError) {
   const Structure s = read_structure(kData + "/pdb/1crn.pdb");
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres.probe = 1e9;
   o.spheres.frequency = 1;
   o.method = SurfaceMethod::pairwise;
-  const SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  const SphereUnion r = solvent_accessible_surface(s.atoms, o);
   EXPECT_TRUE(testing::valid_surface(r.mesh));
   o.method = SurfaceMethod::one_pass;
   try {
-    const SurfaceResult one = solvent_accessible_surface(s.atoms, o);
+    const SphereUnion one = solvent_accessible_surface(s.atoms, o);
     EXPECT_TRUE(testing::valid_surface(one.mesh));
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("too complex"), std::string::npos) << e.what();

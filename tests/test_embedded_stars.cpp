@@ -180,7 +180,7 @@ TEST(EmbeddedStars, CheckFindsAFoldedStar) {
 // proved (a star across a sharp crease can fold over whichever axis it is seen along).
 TEST(EmbeddedStars, MostStarsOfASurfaceAreProved) {
   const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
-  const Mesh m = solvent_accessible_surface(s.atoms, SurfaceOptions{}).mesh;
+  const Mesh m = solvent_accessible_surface(s.atoms, SphereUnionOptions{}).mesh;
   const std::vector<std::uint8_t> embedded = embedded_stars(m, faces_around(m));
   std::size_t proved = 0;
   for (const std::uint8_t e : embedded) proved += e;

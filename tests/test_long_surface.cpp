@@ -29,7 +29,7 @@ class Structures : public ::testing::TestWithParam<Case> {};
 TEST_P(Structures, ValidSurface) {
   const auto& [file, density, probe] = GetParam();
   const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/" + file);
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres.density = density;
   o.spheres.probe = probe;
   // As `molsurf` does, a surface the machine cannot hold is refused before the pass (the
@@ -43,7 +43,7 @@ TEST_P(Structures, ValidSurface) {
   o.check_size = [memory](const SurfaceSizeEstimate& e) {
     if (e.bytes > memory) throw TooLarge{e};
   };
-  SurfaceResult r;
+  SphereUnion r;
   try {
     r = solvent_accessible_surface(s.atoms, o);
   } catch (const TooLarge& too_large) {
@@ -102,11 +102,11 @@ TEST_P(ThreadCount, ChangesNoByte) {
   const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/" + file);
   std::array<std::array<std::uint64_t, 3>, 2> raw, cleaned;
   for (int threads : {1, 2}) {
-    SurfaceOptions o;
+    SphereUnionOptions o;
     o.spheres.density = density;
     o.spheres.probe = probe;
     o.threads = threads;
-    SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+    SphereUnion r = solvent_accessible_surface(s.atoms, o);
     raw[threads - 1] = digest(r.mesh);
     const ThreadCountScope scope(threads);
     improve_surface(r.mesh);

@@ -27,8 +27,8 @@ using testing::valid_surface;
 
 TEST(Surface, OneAtomIsItsSphere) {
   const std::vector<Atom> atoms{atom_at({1, 2, 3}, 1.7)};
-  SurfaceOptions o;
-  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  SphereUnionOptions o;
+  const SphereUnion r = solvent_accessible_surface(atoms, o);
   const Mesh sphere = atom_sphere(atoms[0], 0, o.spheres);
   EXPECT_EQ(r.mesh.face_count(), sphere.face_count());
   EXPECT_DOUBLE_EQ(surface_area(r.mesh), surface_area(sphere));
@@ -37,8 +37,8 @@ TEST(Surface, OneAtomIsItsSphere) {
 
 TEST(Surface, TwoOverlappingAtoms) {
   const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.7), atom_at({2.1, 0.3, 0.2}, 1.5)};
-  SurfaceOptions o;
-  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  SphereUnionOptions o;
+  const SphereUnion r = solvent_accessible_surface(atoms, o);
   EXPECT_TRUE(valid(r.mesh));
   const double a0 = surface_area(atom_sphere(atoms[0], 0, o.spheres));
   const double a1 = surface_area(atom_sphere(atoms[1], 1, o.spheres));
@@ -54,7 +54,7 @@ TEST(Surface, TwoOverlappingAtoms) {
 TEST(Surface, DuplicateAtomsAndABuriedAtom) {
   const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.7), atom_at({0, 0, 0}, 1.7), atom_at({0.1, 0, 0}, 0.2),
                                 atom_at({2, 0, 0}, 1.5)};
-  const SurfaceResult r = solvent_accessible_surface(atoms, {});
+  const SphereUnion r = solvent_accessible_surface(atoms, {});
   EXPECT_TRUE(valid(r.mesh));
   const auto per_atom = area_per_atom(r.mesh, atoms.size());
   EXPECT_EQ(per_atom[2], 0);                    // buried
@@ -65,9 +65,9 @@ TEST(Surface, DuplicateAtomsAndABuriedAtom) {
 TEST(Surface, TouchingSpheresStayApart) {
   // r + probe = 1.5 + 1.4 each, centres 5.8 apart: the probe-inflated spheres touch.
   const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.5), atom_at({5.8, 0, 0}, 1.5)};
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres.frequency = 3;
-  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  const SphereUnion r = solvent_accessible_surface(atoms, o);
   EXPECT_TRUE(valid(r.mesh));
   EXPECT_EQ(connected_components(r.mesh).count, 2u);
 }
@@ -77,10 +77,10 @@ class Crambin : public ::testing::TestWithParam<std::tuple<double, double>> {};
 TEST_P(Crambin, ValidSurfaceAtEachDensityAndProbe) {
   const auto [density, probe] = GetParam();
   const Structure s = read_structure(kData + "/pdb/1crn.pdb");
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres.density = density;
   o.spheres.probe = probe;
-  const SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  const SphereUnion r = solvent_accessible_surface(s.atoms, o);
   EXPECT_TRUE(valid(r.mesh)) << "density " << density << " probe " << probe;
   EXPECT_GT(signed_volume(r.mesh), 0);
   const auto per_atom = area_per_atom(r.mesh, s.atoms.size());
@@ -128,9 +128,9 @@ TEST_P(CrambinAccuracy, WithinHalfAPercentOfTheExactUnionOfBalls) {
     radii.push_back(a.radius + probe);
   }
   const BallUnionMeasure exact = measure_ball_union(centres, radii, 1000);
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres.probe = probe;
-  const SurfaceResult r = solvent_accessible_surface(s.atoms, o);
+  const SphereUnion r = solvent_accessible_surface(s.atoms, o);
   EXPECT_NEAR(surface_area(r.mesh), exact.area, 0.005 * exact.area) << "probe " << probe;
   EXPECT_NEAR(signed_volume(r.mesh), exact.volume, 0.005 * exact.volume) << "probe " << probe;
 }
@@ -140,17 +140,17 @@ INSTANTIATE_TEST_SUITE_P(BothProbes, CrambinAccuracy, ::testing::Values(0.0, 1.4
 TEST(Surface, CrambinAreaAgreesWithLeeRichards) {
   // FreeSASA 2.1.2 (Lee-Richards, ProtOr radii, probe 1.4) gives 2999.32 A^2 for 1crn.pdb.
   const Structure s = read_structure(kData + "/pdb/1crn.pdb");
-  const SurfaceResult r = solvent_accessible_surface(s.atoms, {});
+  const SphereUnion r = solvent_accessible_surface(s.atoms, {});
   EXPECT_NEAR(surface_area(r.mesh), 2999.32, 0.005 * 2999.32);
 }
 
 TEST(Surface, SameResultWithOneOrTwoThreads) {
   const Structure s = read_structure(kData + "/pdb/1crn.pdb");
-  SurfaceOptions one, two;
+  SphereUnionOptions one, two;
   one.threads = 1;
   two.threads = 2;
-  const SurfaceResult a = solvent_accessible_surface(s.atoms, one);
-  const SurfaceResult b = solvent_accessible_surface(s.atoms, two);
+  const SphereUnion a = solvent_accessible_surface(s.atoms, one);
+  const SphereUnion b = solvent_accessible_surface(s.atoms, two);
   ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
   EXPECT_TRUE(a.mesh.vertices == b.mesh.vertices);
   EXPECT_TRUE(a.mesh.faces == b.mesh.faces);
@@ -159,7 +159,7 @@ TEST(Surface, SameResultWithOneOrTwoThreads) {
 
 TEST(Surface, OuterOnlyDropsCavities) {
   const Structure s = read_structure(kData + "/pdb/1crn.pdb");
-  const SurfaceResult r = solvent_accessible_surface(s.atoms, {});
+  const SphereUnion r = solvent_accessible_surface(s.atoms, {});
   const auto components = measure_components(r.mesh);
   ASSERT_GE(components.size(), 2u);  // crambin has a small cavity at this resolution
   EXPECT_FALSE(components.front().cavity());

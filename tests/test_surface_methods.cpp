@@ -47,11 +47,11 @@ INSTANTIATE_TEST_SUITE_P(DataPdb, SmallStructure,
 
 TEST(SurfaceMethods, ThreadCountChangesNoByte) {
   const Structure s = read_structure(kData + "/pdb/1crn.pdb");
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.threads = 1;
-  const SurfaceResult one = solvent_accessible_surface(s.atoms, o);
+  const SphereUnion one = solvent_accessible_surface(s.atoms, o);
   o.threads = 2;
-  const SurfaceResult two = solvent_accessible_surface(s.atoms, o);
+  const SphereUnion two = solvent_accessible_surface(s.atoms, o);
   ASSERT_EQ(one.method, SurfaceMethod::one_pass);
   EXPECT_EQ(one.mesh.faces, two.mesh.faces);
   EXPECT_EQ(one.mesh.face_tags, two.mesh.face_tags);
@@ -80,8 +80,8 @@ TEST(SurfaceMethods, TwoCarbonsOfTheCrashReport) {
 TEST(SurfaceMethods, DuplicatesCostNothingAndKeepTheFirst) {
   std::vector<Atom> atoms(200, atom_at({1, 2, 3}, 1.7));
   atoms.push_back(atom_at({3, 2, 3}, 1.7));
-  SurfaceOptions o;
-  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  SphereUnionOptions o;
+  const SphereUnion r = solvent_accessible_surface(atoms, o);
   EXPECT_EQ(r.one_pass.contained_atoms, 199u);
   EXPECT_TRUE(testing::valid_surface(r.mesh));
   for (std::int32_t tag : r.mesh.face_tags) EXPECT_TRUE(tag == 0 || tag == 200) << tag;
@@ -109,9 +109,9 @@ TEST(SurfaceMethods, Lattices) {
       for (int x = 0; x < 3; ++x)
         for (int y = 0; y < 3; ++y)
           for (int z = 0; z < 2; ++z) atoms.push_back(atom_at(Vec3{double(x), double(y), double(z)} * spacing, 1.5));
-      SurfaceOptions o;
+      SphereUnionOptions o;
       o.spheres = spheres(0, 2, frequency);
-      const SurfaceResult r = solvent_accessible_surface(atoms, o);
+      const SphereUnion r = solvent_accessible_surface(atoms, o);
       EXPECT_EQ(r.one_pass.open_edges, 0u);
       EXPECT_TRUE(testing::valid_surface(r.mesh)) << "spacing " << spacing << " n=" << frequency;
     }
@@ -157,8 +157,8 @@ TEST(SurfaceMethods, BlocksAtTheEdgeOfBeingBuried) {
 
 TEST(SurfaceMethods, NestedAtomsLeaveOnlyTheOuter) {
   const std::vector<Atom> atoms{atom_at({0, 0, 0}, 3.0), atom_at({0.2, 0.1, 0}, 1.0), atom_at({-0.5, 0, 0.3}, 0.5)};
-  SurfaceOptions o;
-  const SurfaceResult r = solvent_accessible_surface(atoms, o);
+  SphereUnionOptions o;
+  const SphereUnion r = solvent_accessible_surface(atoms, o);
   for (std::int32_t tag : r.mesh.face_tags) EXPECT_EQ(tag, 0);
   EXPECT_TRUE(testing::methods_agree(atoms, o.spheres));
 }
@@ -170,7 +170,7 @@ TEST(SurfaceMethods, NearlyCoincidentHugeSpheresAreRefusedPlainly) {
   std::vector<Atom> atoms;
   for (int k = 0; k < 160; ++k)
     atoms.push_back(atom_at({std::fmod(0.37 * k, 3.0), std::fmod(0.61 * k, 2.0), std::fmod(0.13 * k, 1.5)}, 1.7));
-  SurfaceOptions o;
+  SphereUnionOptions o;
   o.spheres = spheres(1e9, 2, 1);
   try {
     solvent_accessible_surface(atoms, o);

@@ -139,11 +139,11 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
     balls[k].centre = probes[k].centre;
     balls[k].radius = spheres.probe;
   }
-  SurfaceOptions sweep_options;
+  SphereUnionOptions sweep_options;
   sweep_options.spheres = spheres;
   sweep_options.spheres.probe = 0;
   sweep_options.threads = threads;
-  SurfaceResult sweep = solvent_accessible_surface(balls, sweep_options);
+  SphereUnion sweep = solvent_accessible_surface(balls, sweep_options);
   if (sweep.one_pass.open_edges > 0)
     throw std::logic_error(surface_detail::open_union_message(sweep.one_pass.open_edges));
   stats.sweep_faces = sweep.mesh.face_count();
@@ -184,10 +184,10 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
   if (atoms.empty()) return out;
 
   auto clock = std::chrono::steady_clock::now();
-  SurfaceOptions sas_options;
+  SphereUnionOptions sas_options;
   sas_options.spheres = spheres;
   sas_options.threads = threads;
-  SurfaceResult sas = solvent_accessible_surface(atoms, sas_options);
+  SphereUnion sas = solvent_accessible_surface(atoms, sas_options);
   if (sas.one_pass.open_edges > 0)
     throw Error("solvent-excluded surface: " + surface_detail::open_union_message(sas.one_pass.open_edges));
   out.stats.sas_faces = sas.mesh.face_count();

@@ -56,7 +56,7 @@ class Pipeline {
     Attempt attempt;
     auto clock = std::chrono::steady_clock::now();
     report(SurfaceStage::union_, 0, 1);
-    SurfaceOptions surface_options;
+    SphereUnionOptions surface_options;
     surface_options.spheres = options_.spheres;
     surface_options.method = method;
     surface_options.threads = threads_;
@@ -79,7 +79,7 @@ class Pipeline {
       attempt.mesh = options_.outer_only ? outer_surface_only(ses.mesh) : std::move(ses.mesh);
       attempt.ses_arrangement = std::make_shared<const SphereArrangement>(std::move(ses.arrangement));
     } else {
-      SurfaceResult sas = method == SurfaceMethod::pairwise ? pairwise_union(surface_options)
+      SphereUnion sas = method == SurfaceMethod::pairwise ? pairwise_union(surface_options)
                                                             : solvent_accessible_surface(atoms_, surface_options);
       attempt.method = sas.method;
       if (sas.one_pass.open_edges > 0) {
@@ -131,7 +131,7 @@ class Pipeline {
   // itself where a face of the other passes; none of the long degenerate battery does:
   // docs/boolean.md, "Rounding and its repair"). That is a limit of the reference method,
   // said as such, not an internal error.
-  SurfaceResult pairwise_union(const SurfaceOptions& surface_options) const {
+  SphereUnion pairwise_union(const SphereUnionOptions& surface_options) const {
     try {
       return solvent_accessible_surface(atoms_, surface_options);
     } catch (const std::invalid_argument&) {

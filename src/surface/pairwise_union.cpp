@@ -100,8 +100,8 @@ class MergeTree {
   bool checked_;
 };
 
-void merge_tree(std::span<const Atom> atoms, const SurfaceOptions& options, int threads, bool checked,
-                SurfaceResult& result) {
+void merge_tree(std::span<const Atom> atoms, const SphereUnionOptions& options, int threads, bool checked,
+                SphereUnion& result) {
   // Atoms inside another's ball add nothing to the union (copies: the lowest index stands
   // for all; as in the one-pass method); merging them only multiplies coincident faces.
   std::vector<std::uint32_t> order = spatial_order(atoms);
@@ -187,7 +187,7 @@ void merge_tree(std::span<const Atom> atoms, const SurfaceOptions& options, int 
 
 }  // namespace
 
-void pairwise_union(std::span<const Atom> atoms, const SurfaceOptions& options, int threads, SurfaceResult& result) {
+void pairwise_union(std::span<const Atom> atoms, const SphereUnionOptions& options, int threads, SphereUnion& result) {
   merge_tree(atoms, options, threads, /*checked=*/false, result);
   MeshCheckOptions quick;
   quick.max_examples = 1;

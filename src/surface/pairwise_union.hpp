@@ -18,6 +18,6 @@ namespace molsurf::surface_detail {
 
 // Fills `result`'s mesh and the merge tree's counts and times (merges, levels,
 // level_stats, subtree_height, seconds.subtrees); `threads` above 0.
-void pairwise_union(std::span<const Atom> atoms, const SurfaceOptions& options, int threads, SurfaceResult& result);
+void pairwise_union(std::span<const Atom> atoms, const SphereUnionOptions& options, int threads, SphereUnion& result);
 
 }  // namespace molsurf::surface_detail

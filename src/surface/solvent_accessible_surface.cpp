@@ -41,9 +41,9 @@ const char* surface_method_name(SurfaceMethod method) {
   return method == SurfaceMethod::one_pass ? "one-pass" : "pairwise";
 }
 
-SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options) {
+SphereUnion solvent_accessible_surface(std::span<const Atom> atoms, const SphereUnionOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  SurfaceResult result;
+  SphereUnion result;
   if (atoms.empty()) return result;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   // The engine's own parallel loops use the default team size: make it the caller's thread

@@ -15,7 +15,7 @@
 
 namespace molsurf {
 
-struct SurfaceOptions {
+struct SphereUnionOptions {
   SphereOptions spheres;
   SurfaceMethod method = SurfaceMethod::one_pass;
   int threads = 0;  // 0: all cores
@@ -33,9 +33,9 @@ struct SurfaceOptions {
   const CancelFlag* cancel = nullptr;
 };
 
-struct SurfaceTimings {  // seconds
+struct SphereUnionTimings {  // seconds
   double union_levels = 0;  // the whole union, either method
-  double subtrees = 0;      // of union_levels: the subtrees below SurfaceResult::subtree_height
+  double subtrees = 0;      // of union_levels: the subtrees below SphereUnion::subtree_height
 };
 
 // One level of the merge tree: where the time goes (step times are summed over the
@@ -46,7 +46,7 @@ struct SurfaceLevel {
   std::size_t split_faces = 0, ray_casts = 0, whole_reruns = 0;
   BooleanTimings steps;
   // Wall time of the level; for the levels merged inside subtrees (below
-  // SurfaceResult::subtree_height), the summed durations of their merges instead.
+  // SphereUnion::subtree_height), the summed durations of their merges instead.
   double seconds = 0;
 
   // The merge's counts and step times added in (one more merge); levels add up likewise.
@@ -69,7 +69,9 @@ struct OnePassStats {
   double seconds_trim = 0, seconds_join = 0;
 };
 
-struct SurfaceResult {
+// The union stage's own result (internal): the surface job's is ComputedSurface
+// (compute_surface.hpp), which takes this mesh through cleanup, check and measures.
+struct SphereUnion {
   Mesh mesh;  // face tags: index of the atom whose sphere the face comes from
   SurfaceMethod method = SurfaceMethod::one_pass;  // the method that made `mesh`
   OnePassStats one_pass;
@@ -78,7 +80,7 @@ struct SurfaceResult {
   // Levels below this height were merged subtree by subtree (each depth first, one per
   // thread); the ones above level by level.
   std::size_t subtree_height = 0;
-  SurfaceTimings seconds;
+  SphereUnionTimings seconds;
 };
 
 // The solvent-accessible surface: the union of all atoms' spheres, by the method asked
@@ -87,6 +89,6 @@ struct SurfaceResult {
 // on the number of threads. A one-pass result that is not closed (never seen; it would be
 // a bug) is returned as it is, with one_pass.open_edges above 0: the fallback to the
 // pairwise method is compute_surface's decision (compute_surface.hpp).
-SurfaceResult solvent_accessible_surface(std::span<const Atom> atoms, const SurfaceOptions& options);
+SphereUnion solvent_accessible_surface(std::span<const Atom> atoms, const SphereUnionOptions& options);
 
 }  // namespace molsurf
