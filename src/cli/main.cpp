@@ -57,7 +57,10 @@ int main(int argc, char** argv) {
       "batch",
       "Run molsurf on every structure of a list or folder, several at a time, each in its own process:\n"
       "a failure is recorded and the rest go on; a rerun skips what is done (manifest.tsv). Summary:\n"
-      "summary.csv and summary.jsonl in the output folder. Exit status 0 when none failed.");
+      "summary.csv and summary.jsonl in the output folder. Exit status 0 when none failed.\n"
+      "Under MPI (mpirun -np N molsurf batch LIST -o OUTDIR) the first process hands the structures\n"
+      "out one at a time to whichever process is free (itself too) and alone writes the manifest\n"
+      "and the summary.");
   batch.add_options(*batch_app);
 
   // Usage errors in one line, like every other error (CLI11_PARSE adds a second).
@@ -82,8 +85,8 @@ int main(int argc, char** argv) {
       return 2;
     }
     if (!subcommand) surface.cap_threads();
-    if (message_passing && message_passing->size() > 1 && subcommand)
-      throw molsurf::Error("under mpirun, molsurf makes one surface in blocks; run check, boolean and batch alone");
+    if (message_passing && message_passing->size() > 1 && (check_app->parsed() || boolean_app->parsed()))
+      throw molsurf::Error("under mpirun, molsurf makes one surface in blocks or runs a batch; run check and boolean alone");
     surface.exchange = message_passing.get();
     if (message_passing && message_passing->rank() != 0) surface.quiet = true;  // the first process reports
     const int status = check_app->parsed()     ? check.run()
