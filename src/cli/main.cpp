@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   CheckCommand check;
   CLI::App* check_app = app.add_subcommand(
       "check",
-      "Read any mesh (.vtp .vtk .ply .off .stl .obj .vert/.face .msh) and report whether it is a valid closed surface:\n"
+      "Read any mesh (.vtp .vtk .ply .off .stl .obj .vert/.face .msh, or a .pvtp index of pieces, glued\n"
+      "at their seams) and report whether it is a valid closed surface:\n"
       "closed, edge- and vertex-manifold, consistently oriented outward, no degenerate face and\n"
       "no self-intersection (decided with exact predicates). Exit status 0 only for a valid surface.");
   check.add_options(*check_app);
