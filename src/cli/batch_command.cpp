@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -111,6 +112,50 @@ void run_handed_jobs(WorkQueue& queue, BatchJobs& jobs, std::size_t width) {
   }
 }
 
+// The first process (or the only one): runs `jobs` here, `width` at a time, and hands
+// them out to the other processes as they ask, until every job's row has come to `record`
+// and every other process has been told that none is left. `draw` shows the progress
+// (the jobs running anywhere).
+void run_and_hand_out(const std::vector<io::BatchJob>& jobs, BatchJobs& local, std::size_t width, WorkQueue* queue,
+                      const std::function<void(std::size_t, const io::BatchRow&)>& record,
+                      const std::function<void(std::size_t)>& draw) {
+  const int others = queue ? queue->size() - 1 : 0;
+  std::size_t next = 0;
+  std::size_t handed_out = 0;  // jobs running on the other processes
+  int released = 0;            // processes told that none is left
+  while (next < jobs.size() || local.running() > 0 || handed_out > 0 || released < others) {
+    bool busy = false;
+    while (next < jobs.size() && local.running() < width) {
+      local.start(jobs[next++]);
+      busy = true;
+    }
+    while (queue) {
+      const std::optional<WorkQueue::Message> message = queue->receive();
+      if (!message) break;
+      busy = true;
+      if (message->asks && next < jobs.size()) {
+        queue->answer(message->from, io::batch_job_bytes(jobs[next++]));
+        ++handed_out;
+      } else if (message->asks) {
+        queue->answer(message->from, "");
+        ++released;
+      } else {
+        const auto result = io::batch_result_from_bytes(message->result);
+        if (!result || handed_out == 0)
+          throw std::runtime_error("a result from process " + std::to_string(message->from) + " that cannot be read");
+        --handed_out;
+        record(result->first, result->second);
+      }
+    }
+    for (const auto& [k, result] : local.finished()) {
+      record(k, result);
+      busy = true;
+    }
+    if (!busy) std::this_thread::sleep_for(kPollInterval);
+    draw(local.running() + handed_out);
+  }
+}
+
 }  // namespace
 
 int BatchCommand::run() const {
@@ -159,54 +204,29 @@ int BatchCommand::run() const {
   if (!quiet)
     std::cerr << "molsurf batch: " << inputs.size() << " structures, " << skipped << " done before, " << pending.size()
               << " to run, " << width << " at a time"
-              << (processes > 1 ? " on each of " + std::to_string(processes) + " processes" : "") << " -> " << output_directory.string() << "\n";
+              << (processes > 1 ? " on each of " + std::to_string(processes) + " processes" : "") << " -> "
+              << output_directory.string() << "\n";
 
   const auto batch_start = std::chrono::steady_clock::now();
   ProgressLine line(!quiet && (progress || isatty(STDERR_FILENO)), pending.size());
-  std::size_t next = 0, done = 0, failures = 0;
-  std::size_t handed_out = 0;  // jobs running on the other processes
-  int released = 0;            // processes told that none is left
-  const auto job = [&](std::size_t k) { return io::BatchJob{k, inputs[k].string(), names[k]}; };
+  std::size_t done = 0, failures = 0;
+  std::vector<io::BatchJob> to_run;
+  for (const std::size_t k : pending) to_run.push_back({k, inputs[k].string(), names[k]});
   const auto record = [&](std::size_t k, const io::BatchRow& result) {
+    if (k >= rows.size())
+      throw std::runtime_error("a result for input " + std::to_string(k) + " of " + std::to_string(rows.size()));
     io::record_batch_result(rows[k], result);
     manifest << io::batch_manifest_line(rows[k]) << std::flush;  // a rerun after a crash resumes from here
     ++done;
     failures += result.status != "ok";
   };
+  const auto draw = [&](std::size_t running) {
+    line.draw(done, failures, running,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count());
+  };
   try {
     BatchJobs local(job_options);
-    while (next < pending.size() || local.running() > 0 || handed_out > 0 || released < processes - 1) {
-      bool busy = false;
-      while (next < pending.size() && local.running() < width) {
-        local.start(job(pending[next++]));
-        busy = true;
-      }
-      while (queue) {
-        const std::optional<WorkQueue::Message> message = queue->receive();
-        if (!message) break;
-        busy = true;
-        if (message->asks && next < pending.size()) {
-          queue->answer(message->from, io::batch_job_bytes(job(pending[next++])));
-          ++handed_out;
-        } else if (message->asks) {
-          queue->answer(message->from, "");
-          ++released;
-        } else {
-          const auto result = io::batch_result_from_bytes(message->result);
-          if (!result || result->first >= rows.size() || handed_out == 0)
-            throw std::runtime_error("a result from process " + std::to_string(message->from) + " that cannot be read");
-          --handed_out;
-          record(result->first, result->second);
-        }
-      }
-      for (const auto& [k, result] : local.finished()) {
-        record(k, result);
-        busy = true;
-      }
-      if (!busy) std::this_thread::sleep_for(kPollInterval);
-      line.draw(done, failures, local.running() + handed_out,
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count());
-    }
+    run_and_hand_out(to_run, local, width, queue.get(), record, draw);
   } catch (const std::exception& e) {
     if (!queue) throw;
     std::cerr << "molsurf: error: batch: " << e.what() << "\n";

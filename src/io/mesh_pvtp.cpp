@@ -78,8 +78,10 @@ Mesh read_pvtp(const path& file) {
     // Tags as Mesh::append keeps them: untagged faces beside tagged ones get kNoTag.
     const bool tagged = glued.has_tags() || piece.has_tags();
     if (tagged) glued.face_tags.resize(glued.faces.size(), kNoTag);
-    for (const Triangle& t : piece.faces) glued.faces.push_back({glued_index[t[0]], glued_index[t[1]], glued_index[t[2]]});
-    if (tagged && piece.has_tags()) glued.face_tags.insert(glued.face_tags.end(), piece.face_tags.begin(), piece.face_tags.end());
+    for (const Triangle& t : piece.faces)
+      glued.faces.push_back({glued_index[t[0]], glued_index[t[1]], glued_index[t[2]]});
+    if (tagged && piece.has_tags())
+      glued.face_tags.insert(glued.face_tags.end(), piece.face_tags.begin(), piece.face_tags.end());
     if (tagged) glued.face_tags.resize(glued.faces.size(), kNoTag);
   }
   if (pieces == 0) fail(file, index->line, "the index lists no <Piece>");
