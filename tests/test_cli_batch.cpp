@@ -104,5 +104,13 @@ TEST(CliBatch, ListsMeshesAndTimeouts) {
   EXPECT_NE(read_text(dir.path() / "out_slow" / "summary.csv").find("stopped after the --timeout"), std::string::npos);
 }
 
+// The help says how to run a sweep over MPI.
+TEST(CliBatch, HelpNamesMpirun) {
+  TempDir dir;
+  const auto help = run_molsurf("batch --help", dir.path());
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("mpirun -np N molsurf batch"), std::string::npos) << help.out;
+}
+
 }  // namespace
 }  // namespace molsurf

@@ -72,7 +72,9 @@ bool mesh_format_is_exact(MeshFormat format, const MeshWriteOptions& options = {
 // format: rounding can make faces degenerate or cross.
 Mesh mesh_as_written(const Mesh& mesh, MeshFormat format, const MeshWriteOptions& options = {});
 
-// Reads .stl (ASCII/binary) .off .ply (ASCII/binary) .obj .vtk .vtp (and MSMS .vert/.face).
+// Reads .stl (ASCII/binary) .off .ply (ASCII/binary) .obj .vtk .vtp (and MSMS .vert/.face),
+// and a .pvtp index as the one surface its .vtp pieces make, glued where their open edges'
+// vertices are equal doubles (the seams of molsurf --blocks).
 // Coincident vertices are not merged except for STL, which has no shared vertices
 // (exactly equal coordinates are merged there). Face tags are read back when present.
 Mesh read_mesh(const std::filesystem::path& path);

@@ -1,26 +1,23 @@
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
-#include <cstring>
+#include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
-#include <map>
-#include <set>
-#include <sstream>
+#include <memory>
+#include <stdexcept>
 #include <thread>
 
-#include "cli/batch_manifest.hpp"
+#include "cli/batch_jobs.hpp"
 #include "cli/commands.hpp"
+#include "cli/mpi/work_queue.hpp"
 #include "cli/validators.hpp"
+#include "io/batch_manifest.hpp"
+#include "io/batch_messages.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/output_files.hpp"
-
-extern char** environ;
 
 namespace molsurf::cli {
 
@@ -29,6 +26,8 @@ namespace {
 // The sweep's own options (the command line's only).
 constexpr WholeParameter kJobsParameter{"jobs", 0, 4096};
 constexpr NumberParameter kTimeoutParameter{"timeout", 0, 1e9, true};  // seconds
+// How long a loop with nothing to do sleeps before it looks at its jobs and messages again.
+constexpr auto kPollInterval = std::chrono::milliseconds(20);
 
 }  // namespace
 
@@ -42,7 +41,9 @@ void BatchCommand::add_options(CLI::App& app) {
                  "summary.csv and summary.jsonl (file, atoms, area, volume, cavities, seconds, status,\n"
                  "message), manifest.tsv (what is done, for reruns), logs/NAME.log for failures")
       ->required();
-  app.add_option("-j,--jobs", jobs, "Structures run at a time, each on one thread (default: one per core)")
+  app.add_option("-j,--jobs", jobs,
+                 "Structures run at a time (per process under mpirun), each on one thread\n"
+                 "(default: one per core this process may use)")
       ->check(whole_number_in(kJobsParameter));
   app.add_option("--mesh", mesh,
                  "Also write each structure's surface in this format (vtp, vtk, ply, off, stl, obj, vert, msh);\n"
@@ -59,38 +60,6 @@ void BatchCommand::add_options(CLI::App& app) {
 }
 
 namespace {
-
-// The result's name for each input: its file name without the structure extensions, made
-// unique in input order (1abc, 1abc-2, ...).
-std::vector<std::string> result_names(const std::vector<std::filesystem::path>& inputs) {
-  std::vector<std::string> names;
-  std::map<std::string, int> seen;
-  for (const std::filesystem::path& p : inputs) {
-    std::filesystem::path stem = p.filename();
-    while (stem.has_extension()) stem = stem.stem();
-    const int n = ++seen[stem.string()];
-    names.push_back(n == 1 ? stem.string() : stem.string() + "-" + std::to_string(n));
-  }
-  return names;
-}
-
-// The error a failed job printed last ("molsurf: error: ..."), or how it ended.
-std::string failure_message(const std::filesystem::path& log, int status) {
-  std::ifstream in(log);
-  std::string last;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("molsurf: error: ", 0) == 0) last = line.substr(16);
-    else if (line.rfind("molsurf: internal error: ", 0) == 0) last = line.substr(9);
-  if (WIFSIGNALED(status)) return "stopped by signal " + std::to_string(WTERMSIG(status)) + (last.empty() ? "" : ": " + last);
-  if (!last.empty()) return last;
-  return "exit status " + std::to_string(WEXITSTATUS(status));
-}
-
-struct Running {
-  std::size_t index;
-  std::chrono::steady_clock::time_point start;
-  bool timed_out = false;
-};
 
 class ProgressLine {
  public:
@@ -113,126 +82,165 @@ class ProgressLine {
   std::size_t total_;
 };
 
+// A process of an MPI launch other than the first: runs the jobs it is handed, `width` at
+// a time, and sends back each one's row.
+void run_handed_jobs(WorkQueue& queue, BatchJobs& jobs, std::size_t width) {
+  bool asked = false, none_left = false;
+  while (!none_left || jobs.running() > 0) {
+    bool busy = false;
+    if (!none_left && !asked && jobs.running() < width) {
+      queue.ask();
+      asked = true;
+    }
+    if (asked)
+      if (const std::optional<std::string> answer = queue.answer()) {
+        asked = false;
+        busy = true;
+        if (answer->empty()) {
+          none_left = true;
+        } else {
+          const std::optional<io::BatchJob> job = io::batch_job_from_bytes(*answer);
+          if (!job) throw std::runtime_error("a job from the first process that cannot be read");
+          jobs.start(*job);
+        }
+      }
+    for (const auto& [index, row] : jobs.finished()) {
+      queue.send_result(io::batch_result_bytes(index, row));
+      busy = true;
+    }
+    if (!busy) std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
+// The first process (or the only one): runs `jobs` here, `width` at a time, and hands
+// them out to the other processes as they ask, until every job's row has come to `record`
+// and every other process has been told that none is left. `draw` shows the progress
+// (the jobs running anywhere).
+void run_and_hand_out(const std::vector<io::BatchJob>& jobs, BatchJobs& local, std::size_t width, WorkQueue* queue,
+                      const std::function<void(std::size_t, const io::BatchRow&)>& record,
+                      const std::function<void(std::size_t)>& draw) {
+  const int others = queue ? queue->size() - 1 : 0;
+  std::size_t next = 0;
+  std::size_t handed_out = 0;  // jobs running on the other processes
+  int released = 0;            // processes told that none is left
+  while (next < jobs.size() || local.running() > 0 || handed_out > 0 || released < others) {
+    bool busy = false;
+    while (next < jobs.size() && local.running() < width) {
+      local.start(jobs[next++]);
+      busy = true;
+    }
+    while (queue) {
+      const std::optional<WorkQueue::Message> message = queue->receive();
+      if (!message) break;
+      busy = true;
+      if (message->asks && next < jobs.size()) {
+        queue->answer(message->from, io::batch_job_bytes(jobs[next++]));
+        ++handed_out;
+      } else if (message->asks) {
+        queue->answer(message->from, "");
+        ++released;
+      } else {
+        const auto result = io::batch_result_from_bytes(message->result);
+        if (!result || handed_out == 0)
+          throw std::runtime_error("a result from process " + std::to_string(message->from) + " that cannot be read");
+        --handed_out;
+        record(result->first, result->second);
+      }
+    }
+    for (const auto& [k, result] : local.finished()) {
+      record(k, result);
+      busy = true;
+    }
+    if (!busy) std::this_thread::sleep_for(kPollInterval);
+    draw(local.running() + handed_out);
+  }
+}
+
 }  // namespace
 
 int BatchCommand::run() const {
-  namespace fs = std::filesystem;
-  const std::vector<fs::path> inputs = batch_inputs(input);
-  const std::vector<std::string> names = result_names(inputs);
-  std::error_code error;
-  fs::create_directories(output_directory / "logs", error);
-  if (error) throw Error(output_directory.string() + ": cannot make the folder: " + error.message());
-  std::string job_options = mesh;
-  for (const std::string& o : options) job_options += " " + o;
-  const fs::path manifest_path = output_directory / "manifest.tsv";
-  std::map<std::string, BatchRow> previous = read_batch_manifest(manifest_path);
-  std::ofstream manifest(manifest_path, std::ios::app);
-  if (!manifest) throw Error(manifest_path.string() + ": cannot write");
-
-  std::vector<BatchRow> rows(inputs.size());
-  std::vector<std::size_t> pending;
-  for (std::size_t k = 0; k < inputs.size(); ++k) {
-    rows[k].input = inputs[k].string();
-    rows[k].hash = batch_hash(inputs[k], job_options);
-    const auto found = previous.find(rows[k].input);
-    if (found != previous.end() && found->second.hash == rows[k].hash &&
-        (found->second.status == "ok" || !retry_failed)) {
-      rows[k] = found->second;  // finished before, with the same input and options
-      continue;
+  const std::unique_ptr<WorkQueue> queue = join_work_queue();
+  BatchJobOptions job_options{output_directory, mesh, options, timeout};
+  const std::size_t width = static_cast<std::size_t>(jobs > 0 ? jobs : available_cores());
+  if (queue && queue->rank() != 0) {
+    // The first process says whether the sweep goes ahead (and, if not, why).
+    if (!queue->start("").empty()) return 1;
+    try {
+      BatchJobs handed(job_options);
+      run_handed_jobs(*queue, handed, width);
+    } catch (const std::exception& e) {
+      std::cerr << "molsurf: error: batch, process " << queue->rank() << ": " << e.what() << "\n";
+      queue->abort_all();
     }
-    pending.push_back(k);
+    return 0;
   }
+
+  namespace fs = std::filesystem;
+  std::vector<fs::path> inputs;
+  std::vector<std::string> names;
+  io::BatchResume resume;
+  std::ofstream manifest;
+  const fs::path manifest_path = output_directory / "manifest.tsv";
+  try {
+    inputs = io::batch_inputs(input);
+    names = io::batch_result_names(inputs);
+    std::error_code error;
+    fs::create_directories(output_directory / "logs", error);
+    if (error) throw Error(output_directory.string() + ": cannot make the folder: " + error.message());
+    std::string hashed_options = mesh;
+    for (const std::string& o : options) hashed_options += " " + o;
+    resume = io::resume_batch(inputs, hashed_options, io::read_batch_manifest(manifest_path), retry_failed);
+    manifest.open(manifest_path, std::ios::app);
+    if (!manifest) throw Error(manifest_path.string() + ": cannot write");
+  } catch (const std::exception& e) {
+    if (queue) queue->start(e.what());
+    throw;
+  }
+  if (queue) queue->start("");
+  std::vector<io::BatchRow>& rows = resume.rows;
+  const std::vector<std::size_t>& pending = resume.pending;
   const std::size_t skipped = inputs.size() - pending.size();
-  const int width = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int processes = queue ? queue->size() : 1;
   if (!quiet)
     std::cerr << "molsurf batch: " << inputs.size() << " structures, " << skipped << " done before, " << pending.size()
-              << " to run, " << width << " at a time -> " << output_directory.string() << "\n";
-
-  // Each job is this program on one structure and one thread.
-  const std::string self = fs::read_symlink("/proc/self/exe", error).string();
-  if (error) throw Error("cannot find the molsurf executable (/proc/self/exe): " + error.message());
-  const auto start_job = [&](std::size_t k) -> pid_t {
-    const fs::path base = output_directory / names[k];
-    std::vector<std::string> args{self, inputs[k].string(), "-q", "--threads", "1", "--json", base.string() + ".json"};
-    if (mesh.empty()) args.push_back("--areas-only");
-    else args.insert(args.end(), {"-o", base.string() + "." + mesh});
-    args.insert(args.end(), options.begin(), options.end());
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    const std::string log = (output_directory / "logs" / (names[k] + ".log")).string();
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = -1;
-    const int failed = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (failed != 0) throw Error("cannot start a job: " + std::string(std::strerror(failed)));
-    return pid;
-  };
+              << " to run, " << width << " at a time"
+              << (processes > 1 ? " on each of " + std::to_string(processes) + " processes" : "") << " -> "
+              << output_directory.string() << "\n";
 
   const auto batch_start = std::chrono::steady_clock::now();
   ProgressLine line(!quiet && (progress || isatty(STDERR_FILENO)), pending.size());
-  std::map<pid_t, Running> running;
-  std::size_t next = 0, done = 0, failures = 0;
-  while (next < pending.size() || !running.empty()) {
-    while (next < pending.size() && running.size() < static_cast<std::size_t>(width)) {
-      const std::size_t k = pending[next++];
-      running[start_job(k)] = {k, std::chrono::steady_clock::now()};
-    }
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, WNOHANG);
-    const auto now = std::chrono::steady_clock::now();
-    if (pid <= 0) {
-      for (auto& [child, job] : running)
-        if (timeout > 0 && !job.timed_out && std::chrono::duration<double>(now - job.start).count() > timeout) {
-          kill(child, SIGKILL);
-          job.timed_out = true;
-        }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      line.draw(done, failures, running.size(), std::chrono::duration<double>(now - batch_start).count());
-      continue;
-    }
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    const Running job = it->second;
-    running.erase(it);
-    BatchRow& row = rows[job.index];
-    row.seconds = std::chrono::duration<double>(now - job.start).count();
-    const fs::path base = output_directory / names[job.index];
-    const fs::path log = output_directory / "logs" / (names[job.index] + ".log");
-    std::ifstream report_file(base.string() + ".json");
-    std::stringstream report;
-    report << report_file.rdbuf();
-    const std::optional<double> area = report_number(report.str(), "area");
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && area) {
-      row.status = "ok";
-      row.message.clear();
-      row.area = *area;
-      row.volume = report_number(report.str(), "volume").value_or(0);
-      row.atoms = static_cast<std::int64_t>(report_number(report.str(), "atoms").value_or(-1));
-      row.cavities = static_cast<std::int64_t>(report_number(report.str(), "cavities").value_or(-1));
-      fs::remove(log, error);
-    } else {
-      row.status = "failed";
-      row.message = job.timed_out ? "stopped after the --timeout of " + std::to_string(timeout) + " s"
-                                  : failure_message(log, status);
-      ++failures;
-    }
-    manifest << batch_manifest_line(row) << std::flush;  // a rerun after a crash resumes from here
+  std::size_t done = 0, failures = 0;
+  std::vector<io::BatchJob> to_run;
+  for (const std::size_t k : pending) to_run.push_back({k, inputs[k].string(), names[k]});
+  const auto record = [&](std::size_t k, const io::BatchRow& result) {
+    if (k >= rows.size())
+      throw std::runtime_error("a result for input " + std::to_string(k) + " of " + std::to_string(rows.size()));
+    io::record_batch_result(rows[k], result);
+    manifest << io::batch_manifest_line(rows[k]) << std::flush;  // a rerun after a crash resumes from here
     ++done;
-    line.draw(done, failures, running.size(), std::chrono::duration<double>(now - batch_start).count());
+    failures += result.status != "ok";
+  };
+  const auto draw = [&](std::size_t running) {
+    line.draw(done, failures, running,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count());
+  };
+  try {
+    BatchJobs local(job_options);
+    run_and_hand_out(to_run, local, width, queue.get(), record, draw);
+  } catch (const std::exception& e) {
+    if (!queue) throw;
+    std::cerr << "molsurf: error: batch: " << e.what() << "\n";
+    queue->abort_all();
   }
   std::error_code ignored;
   fs::remove(output_directory / "logs", ignored);  // only when empty
 
   OutputFiles files;
-  files.add_text(output_directory / "summary.csv", batch_summary_csv(rows));
-  files.add_text(output_directory / "summary.jsonl", batch_summary_jsonl(rows));
+  files.add_text(output_directory / "summary.csv", io::batch_summary_csv(rows));
+  files.add_text(output_directory / "summary.jsonl", io::batch_summary_jsonl(rows));
   files.commit();
   std::size_t failed_total = 0;
-  for (const BatchRow& r : rows) failed_total += r.status != "ok";
+  for (const io::BatchRow& r : rows) failed_total += r.status != "ok";
   if (!quiet) {
     std::cerr << "molsurf batch: " << done << " run (" << failures << " failed), " << skipped << " done before; "
               << failed_total << " of " << rows.size() << " failed in all: " << (output_directory / "summary.csv").string()

@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   CheckCommand check;
   CLI::App* check_app = app.add_subcommand(
       "check",
-      "Read any mesh (.vtp .vtk .ply .off .stl .obj .vert/.face .msh) and report whether it is a valid closed surface:\n"
+      "Read any mesh (.vtp .vtk .ply .off .stl .obj .vert/.face .msh, or a .pvtp index of pieces, glued\n"
+      "at their seams) and report whether it is a valid closed surface:\n"
       "closed, edge- and vertex-manifold, consistently oriented outward, no degenerate face and\n"
       "no self-intersection (decided with exact predicates). Exit status 0 only for a valid surface.");
   check.add_options(*check_app);
@@ -57,7 +58,10 @@ int main(int argc, char** argv) {
       "batch",
       "Run molsurf on every structure of a list or folder, several at a time, each in its own process:\n"
       "a failure is recorded and the rest go on; a rerun skips what is done (manifest.tsv). Summary:\n"
-      "summary.csv and summary.jsonl in the output folder. Exit status 0 when none failed.");
+      "summary.csv and summary.jsonl in the output folder. Exit status 0 when none failed.\n"
+      "Under MPI (mpirun -np N molsurf batch LIST -o OUTDIR) the first process hands the structures\n"
+      "out one at a time to whichever process is free (itself too) and alone writes the manifest\n"
+      "and the summary.");
   batch.add_options(*batch_app);
 
   // Usage errors in one line, like every other error (CLI11_PARSE adds a second).
@@ -82,8 +86,8 @@ int main(int argc, char** argv) {
       return 2;
     }
     if (!subcommand) surface.cap_threads();
-    if (message_passing && message_passing->size() > 1 && subcommand)
-      throw molsurf::Error("under mpirun, molsurf makes one surface in blocks; run check, boolean and batch alone");
+    if (message_passing && message_passing->size() > 1 && (check_app->parsed() || boolean_app->parsed()))
+      throw molsurf::Error("under mpirun, molsurf makes one surface in blocks or runs a batch; run check and boolean alone");
     surface.exchange = message_passing.get();
     if (message_passing && message_passing->rank() != 0) surface.quiet = true;  // the first process reports
     const int status = check_app->parsed()     ? check.run()

@@ -1,4 +1,4 @@
-#include "cli/batch_manifest.hpp"
+#include "io/batch_manifest.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,10 +6,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/csv_field.hpp"
+#include "io/json_string.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/error.hpp"
 
-namespace molsurf::cli {
+namespace molsurf::io {
 
 namespace {
 
@@ -28,47 +30,10 @@ std::string trimmed(const std::string& line) {
   return line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
 }
 
-// RFC 4180: a field with a comma, quote or line break is quoted, its quotes doubled.
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-// A JSON string: quotes, backslashes and control characters escaped; bytes that are not
-// UTF-8 (a file name may hold any) as U+FFFD.
 std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-      ++i;
-    } else if (c < 0x20) {
-      char escape[8];
-      std::snprintf(escape, sizeof escape, "\\u%04x", c);
-      out += escape;
-      ++i;
-    } else if (c < 0x80) {
-      out += static_cast<char>(c);
-      ++i;
-    } else {
-      // The length of a well-formed UTF-8 sequence starting here, or 0.
-      const int length = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
-      bool ok = length > 0 && i + length <= s.size();
-      for (int k = 1; ok && k < length; ++k) ok = (static_cast<unsigned char>(s[i + k]) & 0xc0) == 0x80;
-      if (ok) {
-        out.append(s, i, length);
-        i += length;
-      } else {
-        out += "\xef\xbf\xbd";
-        ++i;
-      }
-    }
-  }
-  return out + "\"";
+  std::string out;
+  append_json_string(out, s);
+  return out;
 }
 
 // The shortest decimal that reads back to the same double.
@@ -112,6 +77,18 @@ std::vector<std::filesystem::path> batch_inputs(const std::filesystem::path& lis
   }
   if (inputs.empty()) throw Error(list_or_directory.string() + ": no structure files to run");
   return inputs;
+}
+
+std::vector<std::string> batch_result_names(const std::vector<std::filesystem::path>& inputs) {
+  std::vector<std::string> names;
+  std::map<std::string, int> seen;
+  for (const std::filesystem::path& p : inputs) {
+    std::filesystem::path stem = p.filename();
+    while (stem.has_extension()) stem = stem.stem();
+    const int n = ++seen[stem.string()];
+    names.push_back(n == 1 ? stem.string() : stem.string() + "-" + std::to_string(n));
+  }
+  return names;
 }
 
 std::string batch_hash(const std::filesystem::path& file, const std::string& options) {
@@ -165,6 +142,33 @@ std::string batch_manifest_line(const BatchRow& r) {
          "\t" + number(r.volume) + "\t" + std::to_string(r.cavities) + "\t" + input + "\t" + message + "\n";
 }
 
+BatchResume resume_batch(const std::vector<std::filesystem::path>& inputs, const std::string& job_options,
+                         const std::map<std::string, BatchRow>& manifest, bool retry_failed) {
+  BatchResume resume;
+  resume.rows.resize(inputs.size());
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    BatchRow& row = resume.rows[k];
+    row.input = inputs[k].string();
+    row.hash = batch_hash(inputs[k], job_options);
+    const auto found = manifest.find(row.input);
+    if (found != manifest.end() && found->second.hash == row.hash && (found->second.status == "ok" || !retry_failed))
+      row = found->second;  // finished before, with the same input and options
+    else
+      resume.pending.push_back(k);
+  }
+  return resume;
+}
+
+void record_batch_result(BatchRow& row, const BatchRow& result) {
+  row.status = result.status;
+  row.seconds = result.seconds;
+  row.atoms = result.atoms;
+  row.cavities = result.cavities;
+  row.area = result.area;
+  row.volume = result.volume;
+  row.message = result.message;
+}
+
 std::string batch_summary_csv(const std::vector<BatchRow>& rows) {
   std::string out = "file,atoms,area,volume,cavities,seconds,status,message\n";
   for (const BatchRow& r : rows) {
@@ -200,4 +204,4 @@ std::optional<double> report_number(const std::string& json, const std::string& 
   return value;
 }
 
-}  // namespace molsurf::cli
+}  // namespace molsurf::io
