@@ -57,9 +57,9 @@ Vec3 slerp(const Vec3& a, const Vec3& b, double angle, double s) {
 
 class CoreBuilder {
  public:
-  CoreBuilder(const Mesh& sas, std::span<const Atom> atoms, double probe, std::span<const std::uint8_t> ridge,
-              double arc_spacing)
-      : sas_(sas), atoms_(atoms), probe_(probe), ridge_(ridge), spacing_(arc_spacing), across_(faces_across(sas)),
+  CoreBuilder(const Mesh& sas, std::span<const Atom> atoms, std::span<const double> contact_scale, double probe,
+              std::span<const std::uint8_t> ridge, double arc_spacing)
+      : sas_(sas), atoms_(atoms), contact_scale_(contact_scale), probe_(probe), ridge_(ridge), spacing_(arc_spacing), across_(faces_across(sas)),
         fans_(3 * sas.face_count()), contact_(3 * sas.face_count(), Index(-1)),
         ridge_index_(sas.vertex_count(), Index(-1)), fan_count_(sas.vertex_count(), 0) {}
 
@@ -116,9 +116,9 @@ class CoreBuilder {
   Index contact(std::uint32_t c) {
     const std::uint32_t root = fans_.find(c);
     if (contact_[root] == Index(-1)) {
-      const Atom& atom = atoms_[static_cast<std::size_t>(atom_of(c))];
-      const double scale = atom.radius / (atom.radius + probe_);
-      contact_[root] = new_vertex(atom.centre + (sas_.vertices[vertex_of(c)] - atom.centre) * scale);
+      const auto a = static_cast<std::size_t>(atom_of(c));
+      const Vec3& centre = atoms_[a].centre;
+      contact_[root] = new_vertex(centre + (sas_.vertices[vertex_of(c)] - centre) * contact_scale_[a]);
     }
     return contact_[root];
   }
@@ -294,6 +294,7 @@ class CoreBuilder {
 
   const Mesh& sas_;
   std::span<const Atom> atoms_;
+  std::span<const double> contact_scale_;
   double probe_;
   std::span<const std::uint8_t> ridge_;
   double spacing_;
@@ -310,11 +311,12 @@ class CoreBuilder {
 
 }  // namespace
 
-ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, double probe,
-                           std::span<const std::uint8_t> ridge, double arc_spacing) {
+ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, std::span<const double> contact_scale,
+                           double probe, std::span<const std::uint8_t> ridge, double arc_spacing) {
   if (sas.face_count() == 0) return {};
   if (sas.face_tags.size() != sas.face_count()) throw Error("solvent-excluded surface: the SAS faces carry no atom tags");
-  return CoreBuilder(sas, atoms, probe, ridge, arc_spacing).build();
+  if (contact_scale.size() != atoms.size()) throw Error("solvent-excluded surface: one contact scale per atom");
+  return CoreBuilder(sas, atoms, contact_scale, probe, ridge, arc_spacing).build();
 }
 
 }  // namespace molsurf::ses_detail
