@@ -9,7 +9,9 @@
 // A SAS vertex is `rolled` or a `ridge`:
 //  - rolled: its profile between two atoms is the probe's meridian arc (the probe centred at
 //    the vertex, from one contact point to the other), and where three or more atoms meet,
-//    a reentrant patch on the probe sphere closes them. Rolled everywhere, the surface is the
+//    a reentrant patch on the probe sphere closes them (their points drawn a little beyond
+//    the sphere, so that the facets between them lie on it on average: chord_lift in
+//    excluded_core.cpp). Rolled everywhere, the surface is the
 //    SES itself wherever the SES has no singularity; where it has (probes that overlap, a
 //    spindle torus), the surface crosses itself;
 //  - ridge: its profile runs from one contact point up to the SAS vertex and down to the
