@@ -60,11 +60,13 @@ Vec3 slerp(const Vec3& a, const Vec3& b, double angle, double s) {
 constexpr double kPinchedFanStep = 0.1;
 
 // The radius, in probe radii, at which points on the probe sphere are drawn when the arcs
-// between them turn through `angle`: a chord lies inside the sphere by probe * angle^2 / 12
-// on average, so its facets, concave as seen from the solid, would add that much volume all
-// over the toroidal and reentrant patches (+0.6 % on four atoms whose reentrant patches
-// overlap). Drawn this much farther out, they lie on the sphere on average.
-double chord_lift(double angle) { return 1 + angle * angle / 12; }
+// between them turn through `angle`. A chord lies inside the sphere by probe * angle^2 / 12
+// on average and is shorter than its arc by angle^2 / 24: facets concave as seen from the
+// solid, they added volume all over the toroidal and reentrant patches (+0.6 % on four
+// atoms whose reentrant patches overlap). Drawn farther out by e, the facets' area grows by
+// about 2 (e - angle^2 / 24) and the sphere's volume by 3 (e - angle^2 / 12); equal and
+// opposite, as for the contact patches (contact_scale.hpp), at e = angle^2 / 15.
+double chord_lift(double angle) { return 1 + angle * angle / 15; }
 
 class CoreBuilder {
  public:
