@@ -72,8 +72,8 @@ class CoreBuilder {
  public:
   CoreBuilder(const Mesh& sas, std::span<const Atom> atoms, std::span<const double> contact_scale, double probe,
               std::span<const std::uint8_t> ridge, double arc_spacing)
-      : sas_(sas), atoms_(atoms), contact_scale_(contact_scale), probe_(probe), ridge_(ridge), spacing_(arc_spacing), across_(faces_across(sas)),
-        fans_(3 * sas.face_count()), contact_(3 * sas.face_count(), Index(-1)),
+      : sas_(sas), atoms_(atoms), contact_scale_(contact_scale), probe_(probe), ridge_(ridge), spacing_(arc_spacing),
+        across_(faces_across(sas)), fans_(3 * sas.face_count()), contact_(3 * sas.face_count(), Index(-1)),
         ridge_index_(sas.vertex_count(), Index(-1)), fan_count_(sas.vertex_count(), 0) {}
 
   ExcludedCore build() {
@@ -345,7 +345,8 @@ class CoreBuilder {
   std::vector<Index> contact_;      // by fan root
   std::vector<Index> ridge_index_;  // by SAS vertex
   std::vector<std::uint32_t> fan_count_;
-  std::unordered_map<std::uint32_t, std::pair<Vec3, std::size_t>> fan_middle_;  // pinched fans' roots: centroid sum, count
+  // By the root of a pinched atom's fan: the sum of its faces' centroids, and their count.
+  std::unordered_map<std::uint32_t, std::pair<Vec3, std::size_t>> fan_middle_;
   std::unordered_map<std::uint64_t, std::vector<Index>> profiles_;
   std::vector<std::tuple<Index, Index, Index>> patch_edges_;  // (SAS vertex, from, to)
   std::vector<std::int32_t> contact_atoms_;
