@@ -454,5 +454,25 @@ TEST(Cleanup, CollapsesEdgesUnderAnAbsoluteLength) {
   EXPECT_NEAR(surface_area(mesh), area, 1e-3 * area);
 }
 
+// Collapses on a convex surface take volume off it; a volume budget bounds what they take,
+// each component's, either way (the SES's cleanup: collapses across the ridges where
+// overlapping probes meet cut them off).
+TEST(Cleanup, KeepsEachComponentsVolumeWithinItsBudget) {
+  const Mesh fine = make_icosphere({0.1, -0.2, 0.3}, 2.0, {.frequency = 24, .area_corrected = true});
+  const double volume = signed_volume(fine);
+  CleanupOptions options;
+  options.max_area_change = 1;  // the area may follow the volume: only the volume binds
+  options.min_edge_length = 0.4;
+  Mesh unbounded = fine;
+  improve_surface(unbounded, options);
+  EXPECT_LT(signed_volume(unbounded), volume * (1 - 2e-3));  // without it, collapses take more
+  options.max_volume_change = 1e-3;
+  Mesh bounded = fine;
+  const CleanupStats stats = improve_surface(bounded, options);
+  EXPECT_GT(stats.collapses, 0u);
+  EXPECT_LE(std::abs(signed_volume(bounded) - volume), 1e-3 * volume);
+  EXPECT_TRUE(check_mesh(bounded).valid());
+}
+
 }  // namespace
 }  // namespace molsurf

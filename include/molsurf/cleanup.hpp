@@ -12,6 +12,9 @@ struct CleanupOptions {
   double min_angle_deg = 5;       // faces with a smaller angle are distorted
   int passes = 6;
   double max_area_change = 1e-3;  // relative; changes stop before exceeding it
+  // Each component's volume likewise (relative, either way); 0: only kept at half its size
+  // and its sign.
+  double max_volume_change = 0;
   // Edges shorter than this part of the median edge are collapsed afterwards (where the
   // rules allow), whatever their faces' angles: meshers' floating-point boundary recovery
   // takes the faces around them for overlapping. 0: no such pass.

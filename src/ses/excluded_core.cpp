@@ -55,12 +55,25 @@ Vec3 slerp(const Vec3& a, const Vec3& b, double angle, double s) {
   return (a * std::sin((1 - s) * angle) + b * std::sin(s * angle)) / sine;
 }
 
+// How far a pinched fan's contact vertex is drawn from its SAS vertex toward the middle of
+// the fan's faces (CoreBuilder::contact_source).
+constexpr double kPinchedFanStep = 0.1;
+
+// The radius, in probe radii, at which points on the probe sphere are drawn when the arcs
+// between them turn through `angle`. A chord lies inside the sphere by probe * angle^2 / 12
+// on average and is shorter than its arc by angle^2 / 24: facets concave as seen from the
+// solid, they added volume all over the toroidal and reentrant patches (+0.6 % on four
+// atoms whose reentrant patches overlap). Drawn farther out by e, the facets' area grows by
+// about 2 (e - angle^2 / 24) and the sphere's volume by 3 (e - angle^2 / 12); equal and
+// opposite, as for the contact patches (contact_scale.hpp), at e = angle^2 / 15.
+double chord_lift(double angle) { return 1 + angle * angle / 15; }
+
 class CoreBuilder {
  public:
-  CoreBuilder(const Mesh& sas, std::span<const Atom> atoms, double probe, std::span<const std::uint8_t> ridge,
-              double arc_spacing)
-      : sas_(sas), atoms_(atoms), probe_(probe), ridge_(ridge), spacing_(arc_spacing), across_(faces_across(sas)),
-        fans_(3 * sas.face_count()), contact_(3 * sas.face_count(), Index(-1)),
+  CoreBuilder(const Mesh& sas, std::span<const Atom> atoms, std::span<const double> contact_scale, double probe,
+              std::span<const std::uint8_t> ridge, double arc_spacing)
+      : sas_(sas), atoms_(atoms), contact_scale_(contact_scale), probe_(probe), ridge_(ridge), spacing_(arc_spacing),
+        across_(faces_across(sas)), fans_(3 * sas.face_count()), contact_(3 * sas.face_count(), Index(-1)),
         ridge_index_(sas.vertex_count(), Index(-1)), fan_count_(sas.vertex_count(), 0) {}
 
   ExcludedCore build() {
@@ -108,17 +121,44 @@ class CoreBuilder {
         vertex_atom.push_back(pair_key(vertex_of(c), static_cast<std::uint32_t>(atom_of(c))));
       }
     std::sort(vertex_atom.begin(), vertex_atom.end());
+    std::vector<std::uint64_t> pinched;
     for (std::size_t k = 1; k < vertex_atom.size(); ++k)
-      if (vertex_atom[k] == vertex_atom[k - 1] && (k == 1 || vertex_atom[k - 1] != vertex_atom[k - 2]))
+      if (vertex_atom[k] == vertex_atom[k - 1] && (k == 1 || vertex_atom[k - 1] != vertex_atom[k - 2])) {
         ++out_.pinched_vertices;
+        pinched.push_back(vertex_atom[k]);
+      }
+    // Where one atom's faces form several fans around a SAS vertex (its patch pinched there,
+    // as around a hole the probe only just passes), each fan's contact vertex scaled from
+    // the SAS vertex would land on the same point, and the fans' faces would touch there:
+    // each is drawn from a point inside its own fan instead (below).
+    if (pinched.empty()) return;
+    for (std::uint32_t c = 0; c < 3 * n; ++c) {
+      const std::uint64_t key = pair_key(vertex_of(c), static_cast<std::uint32_t>(atom_of(c)));
+      if (!std::binary_search(pinched.begin(), pinched.end(), key)) continue;
+      const Triangle& t = sas_.faces[c / 3];
+      auto& [sum, count] = fan_middle_[fans_.find(c)];
+      sum = sum + (sas_.vertices[t[0]] + sas_.vertices[t[1]] + sas_.vertices[t[2]]) / 3.0;
+      ++count;
+    }
+  }
+
+  // The SAS point a fan's contact vertex is scaled from: its SAS vertex, or for a pinched
+  // atom a tenth of the way from it to the middle of the fan's faces (a tenth keeps the
+  // point inside a fan that turns through more than half a circle).
+  Vec3 contact_source(std::uint32_t root, Index v) const {
+    const Vec3& point = sas_.vertices[v];
+    const auto it = fan_middle_.find(root);
+    if (it == fan_middle_.end()) return point;
+    const auto& [sum, count] = it->second;
+    return point + (sum / static_cast<double>(count) - point) * kPinchedFanStep;
   }
 
   Index contact(std::uint32_t c) {
     const std::uint32_t root = fans_.find(c);
     if (contact_[root] == Index(-1)) {
-      const Atom& atom = atoms_[static_cast<std::size_t>(atom_of(c))];
-      const double scale = atom.radius / (atom.radius + probe_);
-      contact_[root] = new_vertex(atom.centre + (sas_.vertices[vertex_of(c)] - atom.centre) * scale);
+      const auto a = static_cast<std::size_t>(atom_of(c));
+      const Vec3& centre = atoms_[a].centre;
+      contact_[root] = new_vertex(centre + (contact_source(root, vertex_of(c)) - centre) * contact_scale_[a]);
     }
     return contact_[root];
   }
@@ -158,9 +198,10 @@ class CoreBuilder {
         const Vec3 db = normalized(out_.mesh.vertices[contact(high)] - u);
         const double angle = std::acos(std::clamp(dot(da, db), -1.0, 1.0));
         const auto segments = static_cast<std::size_t>(std::ceil(angle * probe_ / spacing_));
+        const double lift = probe_ * chord_lift(angle / static_cast<double>(segments));
         if (std::sin(angle) > 1e-9)
           for (std::size_t s = 1; s < segments; ++s)
-            line.push_back(new_vertex(u + slerp(da, db, angle, static_cast<double>(s) / static_cast<double>(segments)) * probe_));
+            line.push_back(new_vertex(u + slerp(da, db, angle, static_cast<double>(s) / static_cast<double>(segments)) * lift));
       }
       line.push_back(contact(high));
       it = profiles_.emplace(key, std::move(line)).first;
@@ -246,7 +287,8 @@ class CoreBuilder {
     double widest = 0;
     for (const Vec3& d : direction) widest = std::max(widest, std::acos(std::clamp(dot(d, middle), -1.0, 1.0)));
     const auto rings = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(widest * probe_ / spacing_)));
-    const Index apex = new_vertex(centre + middle * probe_);
+    const double lift = probe_ * chord_lift(widest / static_cast<double>(rings));
+    const Index apex = new_vertex(centre + middle * lift);
     auto face = [&](Index a, Index b, Index c) {
       const Vec3 m = (out_.mesh.vertices[a] + out_.mesh.vertices[b] + out_.mesh.vertices[c]) / 3.0;
       add_face({a, b, c}, nearest_atom(atoms_at, atoms_, m), u, -1);
@@ -266,7 +308,7 @@ class CoreBuilder {
         for (std::size_t t = 0; t < loop.size(); ++t) {
           const double angle = std::acos(std::clamp(dot(direction[t], middle), -1.0, 1.0));
           const Vec3 d = std::sin(angle) > 1e-9 ? slerp(middle, direction[t], angle, s) : middle;
-          inner[t] = new_vertex(centre + d * probe_);
+          inner[t] = new_vertex(centre + d * lift);
         }
       }
       for (std::size_t t = 0; t < loop.size(); ++t) {
@@ -294,6 +336,7 @@ class CoreBuilder {
 
   const Mesh& sas_;
   std::span<const Atom> atoms_;
+  std::span<const double> contact_scale_;
   double probe_;
   std::span<const std::uint8_t> ridge_;
   double spacing_;
@@ -302,6 +345,8 @@ class CoreBuilder {
   std::vector<Index> contact_;      // by fan root
   std::vector<Index> ridge_index_;  // by SAS vertex
   std::vector<std::uint32_t> fan_count_;
+  // By the root of a pinched atom's fan: the sum of its faces' centroids, and their count.
+  std::unordered_map<std::uint32_t, std::pair<Vec3, std::size_t>> fan_middle_;
   std::unordered_map<std::uint64_t, std::vector<Index>> profiles_;
   std::vector<std::tuple<Index, Index, Index>> patch_edges_;  // (SAS vertex, from, to)
   std::vector<std::int32_t> contact_atoms_;
@@ -310,11 +355,12 @@ class CoreBuilder {
 
 }  // namespace
 
-ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, double probe,
-                           std::span<const std::uint8_t> ridge, double arc_spacing) {
+ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, std::span<const double> contact_scale,
+                           double probe, std::span<const std::uint8_t> ridge, double arc_spacing) {
   if (sas.face_count() == 0) return {};
   if (sas.face_tags.size() != sas.face_count()) throw Error("solvent-excluded surface: the SAS faces carry no atom tags");
-  return CoreBuilder(sas, atoms, probe, ridge, arc_spacing).build();
+  if (contact_scale.size() != atoms.size()) throw Error("solvent-excluded surface: one contact scale per atom");
+  return CoreBuilder(sas, atoms, contact_scale, probe, ridge, arc_spacing).build();
 }
 
 }  // namespace molsurf::ses_detail

@@ -1,15 +1,17 @@
 #pragma once
 // The solvent-excluded surface drawn from the solvent-accessible surface's mesh, face by
 // face, with no Boolean: the inner parallel surface of the SAS at the probe radius.
-//  - each atom's SAS faces, scaled about the atom's centre by r_vdW / (r_vdW + probe),
-//    become its contact patch on the van der Waals sphere (one copy of a SAS vertex per fan
+//  - each atom's SAS faces, scaled about the atom's centre by r_vdW / (r_vdW + probe) (and
+//    the facets' balance: contact_scale.hpp), become its contact patch on the van der Waals sphere (one copy of a SAS vertex per fan
 //    of one atom's faces around it);
 //  - each seam edge between two atoms' faces becomes a strip between the profiles at its two
 //    ends, and each SAS vertex where three or more atoms meet a patch closing its profiles.
 // A SAS vertex is `rolled` or a `ridge`:
 //  - rolled: its profile between two atoms is the probe's meridian arc (the probe centred at
 //    the vertex, from one contact point to the other), and where three or more atoms meet,
-//    a reentrant patch on the probe sphere closes them. Rolled everywhere, the surface is the
+//    a reentrant patch on the probe sphere closes them (their points drawn a little beyond
+//    the sphere, so that the facets between them lie on it on average: chord_lift in
+//    excluded_core.cpp). Rolled everywhere, the surface is the
 //    SES itself wherever the SES has no singularity; where it has (probes that overlap, a
 //    spindle torus), the surface crosses itself;
 //  - ridge: its profile runs from one contact point up to the SAS vertex and down to the
@@ -55,9 +57,10 @@ std::int32_t nearest_atom(const Indices& candidates, std::span<const Atom> atoms
 }
 
 // `sas`: the solvent-accessible surface at probe radius `probe`, its face tags atom
-// indices. `ridge`: per SAS vertex, 1 for a ridge vertex (empty: every vertex rolled).
-// `arc_spacing`: the longest segment of a meridian arc, angstrom.
-ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, double probe,
-                           std::span<const std::uint8_t> ridge, double arc_spacing);
+// indices. `contact_scale`: per atom, the factor about its centre from its SAS faces to its
+// contact patch (contact_scale.hpp). `ridge`: per SAS vertex, 1 for a ridge vertex (empty:
+// every vertex rolled). `arc_spacing`: the longest segment of a meridian arc, angstrom.
+ExcludedCore excluded_core(const Mesh& sas, std::span<const Atom> atoms, std::span<const double> contact_scale,
+                           double probe, std::span<const std::uint8_t> ridge, double arc_spacing);
 
 }  // namespace molsurf::ses_detail

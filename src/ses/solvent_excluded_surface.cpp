@@ -13,6 +13,7 @@
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "ses/contact_scale.hpp"
 #include "ses/excluded_core.hpp"
 #include "ses/probe_sweep.hpp"
 #include "surface/cleanup.hpp"
@@ -22,6 +23,9 @@
 namespace molsurf::ses_detail {
 
 namespace {
+
+// The SES cleanup's volume budget, relative, per component (ses_cleanup_options).
+constexpr double kSesMaxVolumeChange = 1e-3;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -80,7 +84,8 @@ MeshCheck check_all(const Mesh& mesh) {
 ExcludedCore valid_core(const Mesh& sas, std::span<const Atom> atoms, const SphereOptions& spheres,
                         std::vector<std::uint8_t>& ridge, ExcludedSurfaceStats& stats) {
   const double probe = spheres.probe;
-  ExcludedCore core = excluded_core(sas, atoms, probe, ridge, arc_spacing(spheres.density));
+  const std::vector<double> scale = contact_scales(atoms, spheres);
+  ExcludedCore core = excluded_core(sas, atoms, scale, probe, ridge, arc_spacing(spheres.density));
   stats.rolled_faces = core.mesh.face_count();
   for (int round = 0;; ++round) {
     const MeshCheck check = check_all(core.mesh);
@@ -99,7 +104,7 @@ ExcludedCore valid_core(const Mesh& sas, std::span<const Atom> atoms, const Sphe
       std::fill(ridge.begin(), ridge.end(), std::uint8_t{1});
       round = 3;
     }
-    core = excluded_core(sas, atoms, probe, ridge, arc_spacing(spheres.density));
+    core = excluded_core(sas, atoms, scale, probe, ridge, arc_spacing(spheres.density));
   }
   stats.ridge_vertices = static_cast<std::size_t>(std::count(ridge.begin(), ridge.end(), std::uint8_t{1}));
   return core;
@@ -171,6 +176,12 @@ double probe_spacing(double density) { return 1.0 / std::sqrt(density); }
 double arc_spacing(double density) { return 0.7 / std::sqrt(density); }
 
 double ses_min_edge_length(double density) { return 0.3 / std::sqrt(density); }
+
+CleanupOptions ses_cleanup_options(CleanupOptions options, double density) {
+  options.min_edge_length = std::max(options.min_edge_length, ses_min_edge_length(density));
+  if (!(options.max_volume_change > 0)) options.max_volume_change = kSesMaxVolumeChange;
+  return options;
+}
 
 ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads) {
   ExcludedSurface out;

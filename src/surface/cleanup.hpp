@@ -23,7 +23,8 @@ namespace molsurf {
 // edge: exactly valid, such a fold looks like overlapping faces to floating-point
 // consumers such as meshers), must make the worst angle
 // among the faces it touches better (a cluster merge or a neck widening is judged as a
-// whole), must keep the total area within max_area_change, and no
+// whole), must keep the total area within max_area_change (and each component's volume
+// within max_volume_change, when that is set), and no
 // face it changes may meet any other face beyond their shared corners (exact
 // triangle-pair test against a spatial hash). Seams (where faces of different tags, i.e.
 // different spheres, meet) stay where they are when that does as well: among changes

@@ -152,7 +152,13 @@ bool Cleaner::evaluate(Option& o, bool must_improve) const {
   const double sharers = region_ ? (*region_->volume_sharers)[c] : 1;
   const auto it = volume_change_.find(c);
   const double changed = (it == volume_change_.end() ? 0 : it->second) + volume_change;
-  return sign * changed >= -slack / sharers;
+  if (!(sign * changed >= -slack / sharers)) return false;
+  if (!(options_.max_volume_change > 0)) return true;
+  // And, when asked, within the component's volume budget either way: what it has drifted
+  // so far, shared like the slack.
+  const double budget = options_.max_volume_change * std::abs(initial);
+  const double drift = sign * (s_.component_volume[c] - initial);
+  return sign * changed >= -(budget + drift) / sharers && sign * changed <= (budget - drift) / sharers;
 }
 
 // Whether the edit leaves no fold: on every edge of its new faces, the two faces open at

@@ -98,14 +98,9 @@ class Pipeline {
       // The check measures the cleaned surface's quality: not twice.
       CleanupOptions cleanup_options = options_.cleanup_options;
       cleanup_options.measure_after = false;
-      // The SES drawn from the SAS mesh carries every short seam edge of it into its strips (50
-      // to 80 faces per A^2 at density 2): edges under 0.3 / sqrt(density) A (0.21 A at
-      // density 2, where an even mesh's edge is 0.76 A) are collapsed, under the cleanup's
-      // exact rules. 1crn keeps 35 000 of 124 000 faces, its area and volume within 0.05 %
-      // (docs/ses.md).
+      // The SES's own rules (short edges, volume budget: ses_detail::ses_cleanup_options).
       if (options_.surface == SurfaceKind::ses)
-        cleanup_options.min_edge_length =
-            std::max(cleanup_options.min_edge_length, ses_detail::ses_min_edge_length(options_.spheres.density));
+        cleanup_options = ses_detail::ses_cleanup_options(cleanup_options, options_.spheres.density);
       attempt.cleanup = improve_surface(attempt.mesh, cleanup_options);
       seconds_.cleanup += seconds_since(clock);
       report(SurfaceStage::cleanup, 1, 1);
