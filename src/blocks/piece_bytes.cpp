@@ -7,7 +7,6 @@
 
 namespace molsurf::blocks {
 
-
 void append_piece(std::string& out, const PieceMessage& piece) {
   put(out, static_cast<std::uint64_t>(piece.block));
   put_array(out, piece.mesh.vertices);
