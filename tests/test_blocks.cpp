@@ -24,6 +24,7 @@
 #include "molsurf/io.hpp"
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
+#include "molsurf/surface_measures.hpp"
 #include "surface/one_pass/one_pass_union.hpp"
 
 namespace molsurf::blocks {
@@ -53,6 +54,12 @@ std::vector<FaceKey> face_keys(const Mesh& mesh) {
   return keys;
 }
 
+std::size_t json_count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 Mesh glued_blocks(std::span<const Atom> atoms, const SphereOptions& options, std::size_t blocks) {
   const BlockPartition partition = partition_blocks(atoms, options, blocks);
   std::vector<Mesh> pieces;
@@ -63,6 +70,28 @@ Mesh glued_blocks(std::span<const Atom> atoms, const SphereOptions& options, std
     seams.push_back(std::move(piece.seam));
   }
   return glue_pieces(pieces, seams, exact_same_point(atoms, options, partition.contained));
+}
+
+// Pieces read back from files: vertices at the same coordinates are one (the pieces of a
+// checked surface share their seam vertices exactly); tags kept.
+Mesh glued_by_coordinates(const std::vector<Mesh>& pieces) {
+  Mesh glued;
+  std::map<std::array<double, 3>, Index> vertex;
+  for (const Mesh& piece : pieces) {
+    std::vector<Index> vertex_of(piece.vertices.size());
+    for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
+      const Vec3& p = piece.vertices[v];
+      const auto [it, inserted] = vertex.try_emplace({p.x, p.y, p.z}, static_cast<Index>(glued.vertices.size()));
+      if (inserted) glued.vertices.push_back(p);
+      vertex_of[v] = it->second;
+    }
+    for (std::size_t f = 0; f < piece.faces.size(); ++f) {
+      const Triangle& t = piece.faces[f];
+      glued.faces.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
+      glued.face_tags.push_back(piece.tag(f));
+    }
+  }
+  return glued;
 }
 
 // The glued pieces against the whole union: face for face, then area and volume.
@@ -209,45 +238,152 @@ TEST(BlockedSurface, RefusesWhatItDoesNotSplit) {
   EXPECT_NO_THROW(compute_blocked_surface(atoms, options, {.blocks = 2}));
 }
 
-// Pieces read back from files: vertices at the same coordinates are one (the pieces of a
-// checked surface share their seam vertices exactly).
-Mesh glued_by_coordinates(const std::vector<Mesh>& pieces) {
-  Mesh glued;
-  std::map<std::array<double, 3>, Index> vertex;
-  for (const Mesh& piece : pieces) {
-    std::vector<Index> vertex_of(piece.vertices.size());
-    for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
-      const Vec3& p = piece.vertices[v];
-      const auto [it, inserted] = vertex.try_emplace({p.x, p.y, p.z}, static_cast<Index>(glued.vertices.size()));
-      if (inserted) glued.vertices.push_back(p);
-      vertex_of[v] = it->second;
-    }
-    for (const Triangle& t : piece.faces) glued.faces.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
-  }
-  return glued;
+// The streamed job's output: each block's written faces and the seams' faces.
+struct StreamedOutput {
+  std::vector<Mesh> pieces;
+  Mesh seams;
+  BlockedSurface surface;
+};
+
+StreamedOutput streamed_blocks(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, std::size_t blocks) {
+  StreamedOutput out;
+  out.pieces.resize(blocks);
+  BlockedSurfaceOptions blocked;
+  blocked.blocks = blocks;
+  blocked.streamed = true;
+  blocked.piece_done = [&](std::size_t b, const Mesh& piece) { out.pieces.at(b) = piece; };
+  blocked.seams_done = [&](const Mesh& seams) { out.seams = seams; };
+  out.surface = compute_blocked_surface(atoms, options, blocked);
+  return out;
 }
 
-// molsurf --blocks: the pieces beside a .pvtp index, the same bytes on every run, together
-// the surface --merge writes as one file.
-TEST(BlocksCommand, PiecesBesideTheIndexAreTheMergedSurface) {
+// Without cleanup the streamed pieces and the seams' piece are the whole one-pass union,
+// face for face; the merged counts and measures are the glued surface's.
+TEST(StreamedBlocks, UncleanedPiecesAndSeamsAreTheWholeUnion) {
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  const Mesh whole = surface_detail::one_pass_union(s.atoms, SphereOptions{}, 2).mesh;
+  ComputeSurfaceOptions options;
+  options.cleanup = false;
+  for (std::size_t blocks : {2u, 3u, 7u}) {
+    const StreamedOutput out = streamed_blocks(s.atoms, options, blocks);
+    std::vector<Mesh> all = out.pieces;
+    all.push_back(out.seams);
+    const Mesh glued = glued_by_coordinates(all);
+    EXPECT_TRUE(face_keys(glued) == face_keys(whole)) << blocks << " blocks: the faces differ";
+    const SurfaceMeasures& m = out.surface.surface.measures;
+    EXPECT_EQ(m.faces, whole.faces.size()) << blocks << " blocks";
+    EXPECT_EQ(m.vertices, whole.vertices.size()) << blocks << " blocks";
+    EXPECT_NEAR(m.area, surface_area(whole), 1e-12 * surface_area(whole)) << blocks << " blocks";
+    EXPECT_NEAR(m.volume, signed_volume(whole), 1e-11 * signed_volume(whole)) << blocks << " blocks";
+    EXPECT_EQ(m.components.size(), measure_components(whole).size()) << blocks << " blocks";
+    for (const Mesh& piece : out.pieces) EXPECT_FALSE(seam_edges(piece).empty()) << blocks << " blocks";
+  }
+}
+
+// After cleanup: the pieces and seams read as one surface are valid, and are what the
+// merged report describes; against the glued job (which holds the whole surface), the
+// facets' area and volume within 1e-4, the same components (cavities spanning blocks
+// joined through the seams), the same exact areas and shells; the same meshes twice.
+TEST(StreamedBlocks, MatchTheGluedJob) {
+  const Structure s = read_structure(kData + "/pdb/2hhb.pdb");
+  ComputeSurfaceOptions options;
+  options.threads = 2;
+  const BlockedSurface glued = compute_blocked_surface(s.atoms, options, {.blocks = 3});
+  const StreamedOutput out = streamed_blocks(s.atoms, options, 3);
+  std::vector<Mesh> all = out.pieces;
+  all.push_back(out.seams);
+  const Mesh surface = glued_by_coordinates(all);
+  const MeshCheck check = check_mesh(surface);
+  EXPECT_TRUE(check.valid());
+  const ComputedSurface& streamed = out.surface.surface;
+  EXPECT_TRUE(streamed.mesh.faces.empty());
+  EXPECT_EQ(streamed.measures.faces, surface.faces.size());
+  EXPECT_EQ(streamed.measures.vertices, surface.vertices.size());
+  EXPECT_NEAR(streamed.measures.area, check.area, 1e-9 * check.area);
+  EXPECT_NEAR(streamed.measures.volume, check.volume, 1e-9 * check.volume);
+  EXPECT_EQ(streamed.check.euler_characteristic, check.euler_characteristic);
+  EXPECT_EQ(streamed.measures.atom_area.size(), s.atoms.size());
+  const std::vector<double> atom_area = area_per_atom(surface, s.atoms.size());
+  for (std::size_t a = 0; a < s.atoms.size(); ++a)
+    EXPECT_NEAR(streamed.measures.atom_area[a], atom_area[a], 1e-9 * (1 + atom_area[a])) << "atom " << a;
+
+  const SurfaceMeasures& whole = glued.surface.measures;
+  EXPECT_NEAR(streamed.measures.area, whole.area, 1e-4 * whole.area);
+  EXPECT_NEAR(streamed.measures.volume, whole.volume, 1e-4 * whole.volume);
+  ASSERT_EQ(streamed.measures.components.size(), whole.components.size());
+  for (std::size_t c = 0; c < whole.components.size(); ++c) {
+    const double v = whole.components[c].volume;
+    EXPECT_EQ(streamed.measures.components[c].cavity(), whole.components[c].cavity()) << "component " << c;
+    EXPECT_NEAR(streamed.measures.components[c].volume, v, std::max(5e-3 * std::fabs(v), 1e-5)) << "component " << c;
+  }
+  EXPECT_EQ(streamed.component_shells, glued.surface.component_shells);
+  EXPECT_EQ(streamed.exact.area_per_sphere, glued.surface.exact.area_per_sphere);
+
+  const StreamedOutput again = streamed_blocks(s.atoms, options, 3);
+  for (std::size_t b = 0; b < 3; ++b) {
+    EXPECT_EQ(again.pieces[b].faces, out.pieces[b].faces) << "block " << b;
+    EXPECT_TRUE(again.pieces[b].vertices == out.pieces[b].vertices) << "block " << b;
+  }
+  EXPECT_EQ(again.seams.faces, out.seams.faces);
+  EXPECT_TRUE(again.seams.vertices == out.seams.vertices);
+}
+
+// molsurf --blocks N -o NAME.pvtp: the pieces streamed beside the index with the seams'
+// piece, the same bytes on every run; each piece sound but for its boundary, which the
+// others close; read back and glued, a valid surface that the report describes, and whose
+// report matches --merge's (the whole surface held at once).
+class StreamedCommand : public ::testing::TestWithParam<int> {};
+
+TEST_P(StreamedCommand, PiecesBesideTheIndexMatchTheMergedSurface) {
+  const int blocks = GetParam();
   testing::TempDir one, two;
-  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
-  ASSERT_EQ(testing::run_molsurf(input + " --blocks 3 -o s.pvtp -q", one.path()).exit_code, 0);
-  ASSERT_EQ(testing::run_molsurf(input + " --blocks 3 -o s.pvtp -q", two.path()).exit_code, 0);
-  ASSERT_EQ(testing::run_molsurf(input + " --blocks 3 --merge -o merged.vtp -q", one.path()).exit_code, 0);
+  const std::string input = "'" + kData + "/pdb/1crn.pdb' --blocks " + std::to_string(blocks);
+  ASSERT_EQ(testing::run_molsurf(input + " -o s.pvtp --json s.json -q", one.path()).exit_code, 0);
+  ASSERT_EQ(testing::run_molsurf(input + " -o s.pvtp -q", two.path()).exit_code, 0);
+  ASSERT_EQ(testing::run_molsurf(input + " --merge -o merged.vtp --json merged.json -q", one.path()).exit_code, 0);
+  std::vector<std::string> names{"s.pvtp", "s_seams.vtp"};
+  for (int k = 0; k < blocks; ++k) names.push_back("s_" + std::to_string(k) + ".vtp");
+  const std::string index = testing::read_text(one.path() / "s.pvtp");
   std::vector<Mesh> pieces;
-  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s_2.vtp"}) {
+  for (const std::string& name : names) {
     const std::string bytes = testing::read_text(one.path() / name);
     EXPECT_FALSE(bytes.empty()) << name;
     EXPECT_EQ(bytes, testing::read_text(two.path() / name)) << name;
-    if (std::string(name) != "s.pvtp") pieces.push_back(read_mesh(one.path() / name));
+    if (name == "s.pvtp") continue;
+    EXPECT_NE(index.find("<Piece Source=\"" + name + "\"/>"), std::string::npos) << name;
+    pieces.push_back(read_mesh(one.path() / name));
+    const MeshCheck piece = check_mesh(pieces.back());
+    EXPECT_GT(piece.boundary_edges, 0u) << name;
+    EXPECT_TRUE(piece_problems(piece, piece.boundary_edges).empty()) << name;
   }
-  EXPECT_NE(testing::read_text(one.path() / "s.pvtp").find("<Piece Source=\"s_2.vtp\"/>"), std::string::npos);
-  const Mesh glued = glued_by_coordinates(pieces), merged = read_mesh(one.path() / "merged.vtp");
-  EXPECT_TRUE(check_mesh(glued).valid());
-  EXPECT_EQ(glued.faces.size(), merged.faces.size());
-  EXPECT_EQ(glued.vertices.size(), merged.vertices.size());
-  EXPECT_NEAR(surface_area(glued), surface_area(merged), 1e-9 * surface_area(merged));
+  const Mesh glued = glued_by_coordinates(pieces);
+  const MeshCheck check = check_mesh(glued);
+  EXPECT_TRUE(check.valid());
+  const std::string report = testing::read_text(one.path() / "s.json");
+  EXPECT_EQ(testing::json_number(report, "faces"), static_cast<double>(glued.faces.size()));
+  // The report's own vertex count (an earlier "vertices" is a shell's).
+  EXPECT_EQ(testing::json_number(report.substr(report.find("\n  \"vertices\"")), "vertices"),
+            static_cast<double>(glued.vertices.size()));
+  EXPECT_NEAR(testing::json_number(report, "facet_area"), check.area, 1e-9 * check.area);
+  EXPECT_NEAR(testing::json_number(report, "facet_volume"), check.volume, 1e-9 * check.volume);
+  const std::string merged = testing::read_text(one.path() / "merged.json");
+  for (const char* key : {"facet_area", "facet_volume"}) {
+    const double whole = testing::json_number(merged, key);
+    EXPECT_NEAR(testing::json_number(report, key), whole, 1e-4 * whole) << key;
+  }
+  EXPECT_EQ(testing::json_number(report, "area"), testing::json_number(merged, "area"));  // exact, from the spheres
+  EXPECT_EQ(testing::json_number(report, "cavities"), testing::json_number(merged, "cavities"));
+  EXPECT_EQ(json_count(report, "\"kind\": \"cavity\""), json_count(merged, "\"kind\": \"cavity\""));
+}
+
+INSTANTIATE_TEST_SUITE_P(Crambin, StreamedCommand, ::testing::Values(3, 5));
+
+TEST(BlocksCommand, RefusesAVolumeMeshAroundStreamedPieces) {
+  testing::TempDir dir;
+  const auto run = testing::run_molsurf("'" + kData + "/pdb/1crn.pdb' --blocks 2 -o s.pvtp --volume-mesh v.msh", dir.path());
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("--merge"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "s_0.vtp"));
 }
 
 TEST(BlocksCommand, RefusesMergeWithoutBlocksOrIntoAnIndex) {

@@ -1,5 +1,6 @@
-// mpirun -np 2 molsurf (docs/scale-out.md): two processes, one block each, against the same
-// two blocks made by one process (the same bytes, pieces and report but its timings) and
+// mpirun -np 2 molsurf (docs/scale-out.md): two processes, one block each, each writing its
+// own piece and sending the first only its seam band and summary, against the same two
+// blocks made by one process (the same bytes, pieces, seams and report but its timings) and
 // against the single-process surface (the facets' area within 1e-4, the same components,
 // the exact areas equal). Skipped when molsurf was built without MPI.
 #include <gtest/gtest.h>
@@ -41,7 +42,7 @@ TEST_P(TwoProcesses, EqualTwoBlocksAndTheSingleProcessSurface) {
   ASSERT_EQ(launched.exit_code, 0) << launched.err;
   ASSERT_EQ(testing::run_molsurf(input + " --blocks 2" + outputs, blocks.path()).exit_code, 0);
   ASSERT_EQ(testing::run_molsurf(input + " -o s.vtp --json s.json -q", single.path()).exit_code, 0);
-  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp"}) {
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s_seams.vtp"}) {
     const std::string bytes = testing::read_text(mpi.path() / name);
     EXPECT_FALSE(bytes.empty()) << name;
     EXPECT_EQ(bytes, testing::read_text(blocks.path() / name)) << name;

@@ -29,6 +29,12 @@ std::vector<ComponentMeasure> measure_components(const Mesh& mesh);
 // votes.
 std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement);
 
+// The same for components given by the atoms of their faces (each list in any order, with
+// repeats; sorted and made unique here), in the order given: for a surface measured in
+// parts (the streamed blocks, whose components are joined from pieces).
+std::vector<std::int64_t> shells_of_atom_sets(std::span<std::vector<std::uint32_t>> atoms_of,
+                                              const SphereArrangement& arrangement);
+
 // Both at once (the components found and measured once).
 struct MeshComponentsAndShells {
   std::vector<ComponentMeasure> components;

@@ -1,8 +1,9 @@
 #pragma once
 // What the blocks need from a message-passing layer, and nothing more: how many processes
-// run the job, which one this is, and the pieces' bytes gathered on the first. The block
+// run the job, which one this is, the pieces' bytes gathered on the first, and the first's
+// word sent to all. The block
 // code is written against this; the MPI implementation lives in one file of the command
-// (src/cli/mpi_exchange.cpp), so the library itself needs no MPI.
+// (src/cli/mpi/mpi_exchange.cpp), so the library itself needs no MPI.
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ class BlockExchange {
   // Every process's bytes on rank 0, in rank order (empty elsewhere). Collective: every
   // process calls it once per exchange, even one that failed (it sends what went wrong).
   virtual std::vector<std::string> gather(const std::string& bytes) = 0;
+  // Rank 0's `bytes` on every process (the others' argument is ignored). Collective.
+  virtual std::string broadcast(const std::string& bytes) = 0;
 };
 
 }  // namespace molsurf::blocks

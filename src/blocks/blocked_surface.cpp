@@ -12,7 +12,9 @@
 #include "blocks/block_partition.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_bytes.hpp"
+#include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
+#include "blocks/streamed_surface.hpp"
 #include "common/thread_count_scope.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
@@ -28,48 +30,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Rings of edges around a piece's seam that its own cleanup leaves alone.
-constexpr int kPieceSeamBand = 3;
-
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-void refuse_unsupported(const ComputeSurfaceOptions& options) {
-  if (options.surface == SurfaceKind::ses)
-    throw Error("--blocks computes the solvent-accessible and van der Waals surfaces; the SES is not split into blocks");
-  if (options.method != SurfaceMethod::one_pass)
-    throw Error("--blocks runs the one-pass union (the default --method); the pairwise union is not split into blocks");
-  if (options.outer_only) throw Error("--blocks keeps the cavities: drop --outer-only");
-  if (options.true_points) throw Error("--blocks does not move vertices onto the true spheres: drop --true-points");
-  if (options.stern_probe)
-    throw Error("--blocks makes one surface: drop --stern (the Stern layer is the SAS at --probe R, in a run of its own)");
-}
-
-// The counts of one more cleanup (a piece's, or the seams').
-void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned) {
-  if (!result.cleanup) result.cleanup = CleanupStats{};
-  result.cleanup->collapses += cleaned.collapses;
-  result.cleanup->flips += cleaned.flips;
-  result.cleanup->moves += cleaned.moves;
-  result.cleanup->refused += cleaned.refused;
-  result.cleanup->short_edges_before += cleaned.short_edges_before;
-  result.cleanup->short_edges_after += cleaned.short_edges_after;
-}
-
-// The quality of two meshes together, from each one's.
-void combine_quality(Quality& total, const Quality& part) {
-  if (part.faces == 0) return;
-  if (total.faces == 0) {
-    total = part;
-    return;
-  }
-  const double n = static_cast<double>(total.faces), m = static_cast<double>(part.faces);
-  total.mean_min_angle_deg = (total.mean_min_angle_deg * n + part.mean_min_angle_deg * m) / (n + m);
-  total.min_angle_deg = std::min(total.min_angle_deg, part.min_angle_deg);
-  total.max_aspect_ratio = std::max(total.max_aspect_ratio, part.max_aspect_ratio);
-  total.below_1deg += part.below_1deg;
-  total.below_5deg += part.below_5deg;
-  total.faces += part.faces;
-}
 
 // The faces of `mesh` whose atom lies in block `block`, on their own vertices.
 Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, std::size_t block) {
@@ -89,48 +50,6 @@ Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, s
     piece.face_tags.push_back(mesh.face_tags[f]);
   }
   return piece;
-}
-
-// Block b's piece: computed, cleaned with its seam frozen, checked but for the seam.
-PieceMessage make_piece(std::span<const Atom> atoms, const BlockPartition& partition, std::size_t b,
-                        const ComputeSurfaceOptions& options, int threads) {
-  PieceMessage m;
-  m.block = b;
-  auto clock = Clock::now();
-  m.stats.atoms = partition.atoms[b].size();
-  m.stats.halo_atoms = partition.halo[b].size();
-  BlockPiece piece = compute_block_piece(block_atoms(atoms, partition, b), options.spheres, threads);
-  m.seconds_union = seconds_since(clock);
-  clock = Clock::now();
-  m.before = mesh_quality(piece.mesh);
-  if (options.cleanup) {
-    // The seam's vertices are shared with the neighbouring pieces: frozen, both sides
-    // keep them where the union put them, and the pieces still glue exactly. So are the
-    // vertices near them: an edit there could cross a neighbouring piece's face, which this
-    // piece cannot see (the capsid 1f2n in 4 blocks, with the seam alone frozen: 14 crossing
-    // pairs); the seams' cleanup, which sees both sides, cleans that band.
-    std::vector<std::uint8_t> frozen = frozen_beyond(piece.mesh, seam_vertices(piece.mesh), kPieceSeamBand);
-    for (std::uint8_t& f : frozen) f = f ? 0 : 1;
-    CleanupOptions cleanup = options.cleanup_options;
-    cleanup.measure_after = false;
-    m.cleanup = improve_surface(piece.mesh, cleanup, frozen);
-  }
-  m.seconds_cleanup = seconds_since(clock);
-  clock = Clock::now();
-  m.stats.seam_edges = seam_edges(piece.mesh).size();
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = check_mesh(piece.mesh, check_options);
-  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
-    std::string text = "block " + std::to_string(b) + " of " + std::to_string(partition.size()) + ": its piece has";
-    for (const std::string& p : problems) text += " " + p + ";";
-    throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});
-  }
-  m.seconds_check = seconds_since(clock);
-  m.stats.seconds = m.seconds_union + m.seconds_cleanup + m.seconds_check;
-  m.mesh = std::move(piece.mesh);
-  m.seam = std::move(piece.seam);
-  return m;
 }
 
 }  // namespace
@@ -168,6 +87,11 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   };
 
   const BlockPartition partition = partition_blocks(atoms, options.spheres, blocked.blocks);
+  if (blocked.streamed) {
+    ComputeSurfaceOptions streamed = options;
+    streamed.threads = result.threads;
+    return compute_streamed_surface(atoms, streamed, partition, blocked);
+  }
   report(SurfaceStage::union_, 0, partition.size());
   std::vector<PieceMessage> messages;
   BlockExchange* exchange = blocked.exchange;
@@ -235,7 +159,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     // The seams' own cleanup: their slivers, which no piece could touch, with the faces of
     // both sides in view; everything but a band two rings wider than the pieces left frozen.
     clock = Clock::now();
-    const std::vector<std::uint8_t> frozen = frozen_beyond(glued, glued_seam, kPieceSeamBand + 2);
+    const std::vector<std::uint8_t> frozen = frozen_beyond(glued, glued_seam, kSeamCleanupBand);
     CleanupOptions cleanup = options.cleanup_options;
     cleanup.measure_after = false;
     add_cleanup(result, improve_surface(glued, cleanup, frozen));

@@ -1,11 +1,12 @@
 #pragma once
 // The surface job over spatial blocks (`molsurf --blocks N`): the atoms cut into blocks
 // (block_partition.hpp), each block's piece computed from its atoms and halo, cleaned with
-// its seam frozen and checked on its own; then the pieces glued along their seams, the
-// seams' slivers cleaned with both sides in view, the whole surface checked and measured as
-// compute_surface measures one (exact areas, components and cavities joined through the
-// seams), and handed back to the caller block by block. The glued surface is held whole:
-// the peak memory is the surface's (the pieces' stream to disk is the step after).
+// its seam frozen and checked on its own. Glued (the default): the pieces are glued along
+// their seams, the seams' slivers cleaned with both sides in view, the whole surface checked
+// and measured as compute_surface measures one (exact areas, components and cavities joined
+// through the seams), and handed back block by block; the peak memory is the surface's.
+// Streamed (streamed_surface.hpp): each piece's faces away from the seams are handed out
+// as soon as the piece is checked and released; the peak memory is a piece's and the seams'.
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -23,15 +24,23 @@ namespace molsurf::blocks {
 struct BlockedSurfaceOptions {
   std::size_t blocks = 1;
   // Called with each block's piece of the checked surface (face tags: atom indices), block
-  // by block. May be empty.
+  // by block. May be empty. Streamed: with the piece's faces away from the seams, on the
+  // process that made it, as soon as it is checked.
   std::function<void(std::size_t block, const Mesh& piece)> piece_done;
+  // Streamed: the mesh's faces are not kept; the seams' faces, cleaned and checked with the
+  // faces near them, go to `seams_done` (on the first process; may be empty, and so may the
+  // seams with one block), and the result's mesh is empty, its measures and check merged
+  // from the pieces'.
+  bool streamed = false;
+  std::function<void(const Mesh& seams)> seams_done;
   // Processes that share the job (may be null: this one alone). Each makes its blocks'
-  // pieces (r, r + size, ...); the first glues, checks and measures them.
+  // pieces (r, r + size, ...); the first glues (or, streamed, joins the seams), checks and
+  // measures them.
   BlockExchange* exchange = nullptr;
 };
 
 struct BlockedSurface {
-  ComputedSurface surface;  // mesh: the pieces glued along their seams, checked
+  ComputedSurface surface;  // mesh: the pieces glued along their seams, checked (streamed: empty)
   std::vector<BlockStats> blocks;
   // False on every process of an exchange but the first: it made its pieces and handed
   // them over; `surface` is empty.

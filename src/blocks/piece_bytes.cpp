@@ -1,58 +1,11 @@
 #include "blocks/piece_bytes.hpp"
 
 #include <cstdint>
-#include <cstring>
 #include <stdexcept>
-#include <type_traits>
+
+#include "blocks/byte_stream.hpp"
 
 namespace molsurf::blocks {
-
-namespace {
-
-template <class T>
-void put(std::string& out, const T& value) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <class T>
-void put_array(std::string& out, const std::vector<T>& values) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  put(out, static_cast<std::uint64_t>(values.size()));
-  if (!values.empty()) out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-}
-
-class Reader {
- public:
-  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
-  bool done() const { return at_ == bytes_.size(); }
-
-  template <class T>
-  T get() {
-    T value;
-    take(&value, sizeof(T));
-    return value;
-  }
-  template <class T>
-  std::vector<T> get_array() {
-    const auto n = get<std::uint64_t>();
-    if (n > (bytes_.size() - at_) / sizeof(T)) throw std::invalid_argument("read_pieces: truncated bytes");
-    std::vector<T> values(n);
-    if (n > 0) take(values.data(), n * sizeof(T));
-    return values;
-  }
-
- private:
-  void take(void* to, std::size_t n) {
-    if (n > bytes_.size() - at_) throw std::invalid_argument("read_pieces: truncated bytes");
-    std::memcpy(to, bytes_.data() + at_, n);
-    at_ += n;
-  }
-  std::string_view bytes_;
-  std::size_t at_ = 0;
-};
-
-}  // namespace
 
 void append_piece(std::string& out, const PieceMessage& piece) {
   put(out, static_cast<std::uint64_t>(piece.block));
@@ -69,7 +22,7 @@ void append_piece(std::string& out, const PieceMessage& piece) {
 }
 
 std::vector<PieceMessage> read_pieces(std::string_view bytes) {
-  Reader in(bytes);
+  ByteReader in(bytes);
   std::vector<PieceMessage> pieces;
   while (!in.done()) {
     PieceMessage p;

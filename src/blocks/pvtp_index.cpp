@@ -25,7 +25,13 @@ std::filesystem::path piece_path(const std::filesystem::path& index, std::size_t
   return piece;
 }
 
-std::string pvtp_index(const std::filesystem::path& index, std::size_t pieces) {
+std::filesystem::path seams_path(const std::filesystem::path& index) {
+  std::filesystem::path seams = index;
+  seams.replace_filename(index.stem().string() + "_seams.vtp");
+  return seams;
+}
+
+std::string pvtp_index(const std::filesystem::path& index, std::size_t pieces, bool with_seams) {
   std::string xml =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
@@ -45,6 +51,7 @@ std::string pvtp_index(const std::filesystem::path& index, std::size_t pieces) {
       "    </PPoints>\n";
   for (std::size_t k = 0; k < pieces; ++k)
     xml += "    <Piece Source=\"" + xml_attribute(piece_path(index, k).filename().string()) + "\"/>\n";
+  if (with_seams) xml += "    <Piece Source=\"" + xml_attribute(seams_path(index).filename().string()) + "\"/>\n";
   xml += "  </PPolyData>\n</VTKFile>\n";
   return xml;
 }

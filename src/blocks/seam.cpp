@@ -130,13 +130,19 @@ Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamP
   for (std::uint32_t k = 0; k < pieces.size(); ++k) {
     std::unordered_map<CoordinateKey, const SeamPoint*, CoordinateHash> by_position;
     for (const SeamPoint& p : seams[k]) by_position.emplace(key_of(p.position), &p);
-    on_seam[k] = seam_vertices(pieces[k]);
+    // A piece's seam vertices are where its seam points are: a whole piece's open edges,
+    // or of a seam band (streamed_piece.hpp) the edges on the seam but not those along
+    // the band's far side, where the band meets the faces already written.
+    on_seam[k].assign(pieces[k].vertices.size(), 0);
+    std::size_t found = 0;
     for (std::uint32_t v = 0; v < pieces[k].vertices.size(); ++v) {
-      if (!on_seam[k][v]) continue;
       const auto it = by_position.find(key_of(pieces[k].vertices[v]));
-      if (it == by_position.end()) throw std::logic_error("glue_pieces: a seam vertex that was not on the seam");
+      if (it == by_position.end()) continue;
+      on_seam[k][v] = 1;
+      ++found;
       entries.push_back({k, v, it->second});
     }
+    if (found != seams[k].size()) throw std::logic_error("glue_pieces: a seam point that is no vertex of its piece");
   }
   // Classes of equal points: one definition, then equal exact values.
   std::vector<std::uint32_t> parent(entries.size());

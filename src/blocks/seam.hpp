@@ -41,7 +41,8 @@ using SamePoint = std::function<bool(const surface_detail::PointDefinition&, con
 
 // The pieces as one mesh: faces in piece order (tags kept), vertices in piece order, the
 // seam vertices of all pieces merged as above (`seams[k]`: piece k's seam points, found by
-// position; its seam vertices must still be where they were when it was joined).
+// position; its seam vertices must still be where they were when it was joined). A piece
+// may be a part of its block's piece that holds the whole seam (a seam band).
 // `same_point` is asked only about points with different definitions whose coordinates lie
 // within a few units in the last place.
 // With `on_seam` (may be null): per vertex of the glued mesh, 1 where pieces were glued.

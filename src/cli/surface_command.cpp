@@ -70,23 +70,23 @@ ComputedSurface compute_with_progress(std::span<const Atom> atoms, ComputeSurfac
   }
 }
 
-// The surface block by block (--blocks), with a progress bar unless quiet; each piece is
-// handed to `piece_done` (may be empty) as soon as it is checked.
-// Empty on every process of an MPI launch but the first, which gets the whole surface.
-std::optional<ComputedSurface> compute_blocks_with_progress(
-    std::span<const Atom> atoms, ComputeSurfaceOptions options, std::size_t blocks, blocks::BlockExchange* exchange,
-    bool quiet, bool force_progress, const std::filesystem::path& out,
-    const std::function<void(std::size_t, const Mesh&)>& piece_done) {
+// The surface block by block (--blocks), with a progress bar unless quiet. With `blocked`'s
+// piece_done, each piece is handed over as soon as it is checked (streamed: only its faces
+// away from the seams, which then go to seams_done).
+// Empty on every process of an MPI launch but the first, which gets the surface (streamed:
+// its measures only).
+std::optional<ComputedSurface> compute_blocks_with_progress(std::span<const Atom> atoms, ComputeSurfaceOptions options,
+                                                            const blocks::BlockedSurfaceOptions& blocked, bool quiet,
+                                                            bool force_progress, const std::filesystem::path& out) {
   try {
     ProgressBar bar(quiet, force_progress);
     options.progress = [&bar](SurfaceStage stage, std::size_t done, std::size_t total) {
       bar.update(surface_stage_name(stage), done, total);
     };
-    blocks::BlockedSurface blocked = blocks::compute_blocked_surface(
-        atoms, options, {.blocks = blocks, .piece_done = piece_done, .exchange = exchange});
+    blocks::BlockedSurface result = blocks::compute_blocked_surface(atoms, options, blocked);
     bar.finish();
-    if (!blocked.root) return std::nullopt;
-    return std::move(blocked.surface);
+    if (!result.root) return std::nullopt;
+    return std::move(result.surface);
   } catch (const SurfaceCheckFailed& failed) {
     if (!quiet)
       for (const std::string& note : failed.notes()) std::cerr << "molsurf: note: " << note << "\n";
@@ -187,8 +187,9 @@ int SurfaceCommand::run() const {
     return run_areas_only();
   }
   const std::filesystem::path out = surface_output_path(*this);
-  // --blocks with -o NAME.pvtp: each block's piece NAME_K.vtp beside the index, every
-  // check of a surface file made on the pieces' format.
+  // --blocks with -o NAME.pvtp: each block's piece NAME_K.vtp written as soon as it is made
+  // and the seams' NAME_seams.vtp beside the index, every check of a surface file made on the
+  // pieces' format; the surface is never held whole.
   // Under MPI with more than one process, one block each unless --blocks says otherwise.
   const std::size_t block_count = blocks > 0 ? blocks : exchange && exchange->size() > 1 ? exchange->size() : 0;
   if (merge && block_count == 0) throw Error("--merge glues the pieces of --blocks N: give --blocks as well");
@@ -196,11 +197,15 @@ int SurfaceCommand::run() const {
   if (pieces && merge)
     throw Error("--merge writes one surface file: give -o NAME.vtp (or another mesh format), not " + out.string());
   if (pieces && split_components) throw Error("--split-components writes whole surfaces: give --merge with it");
+  if (pieces && volume_option->count() > 0)
+    throw Error("--volume-mesh meshes around the whole surface, which -o " + out.string() +
+                " never holds at once: give --merge -o NAME.vtp with it");
   const std::filesystem::path mesh_out = pieces ? blocks::piece_path(out, 0) : out;
   // Every output checked before any work: a wrong path costs nothing.
   std::vector<OutputRequest> outputs = requested_outputs(*this, mesh_out);
   if (pieces) {
     for (std::size_t k = 1; k < block_count; ++k) outputs.push_back({blocks::piece_path(out, k), "-o", true});
+    outputs.push_back({blocks::seams_path(out), "-o", true});
     outputs.push_back({out, "-o"});
   }
   if (!formats.empty()) outputs.push_back({kStandardOutput, "--format"});
@@ -226,18 +231,33 @@ int SurfaceCommand::run() const {
   if (!silent) text << format_read_report(s.report) << format_sphere_plan(plan, spheres);
   flush_standard_output();  // shown before the long work, and a broken standard output stops it
 
-  // All or nothing: every file is complete before any replaces an old one.
+  // All or nothing: every file is complete before any replaces an old one (the pieces go to
+  // their temporaries as they are made; under MPI each process keeps its own pieces' files,
+  // and replaces them once the first has found the whole surface valid).
   OutputFiles files;
-  const auto write_piece = [&](std::size_t block, const Mesh& piece) {
-    const SurfaceFileOptions file{.ascii = ascii, .msms_header = !no_header, .threads = threads};
-    files.add_mesh(blocks::piece_path(out, block), piece, surface_write_options(kind(), spheres, s.atoms, structure, file));
-  };
+  const SurfaceFileOptions file{.ascii = ascii, .msms_header = !no_header, .threads = threads};
+  const MeshWriteOptions piece_options = surface_write_options(kind(), spheres, s.atoms, structure, file);
+  bool with_seams = false;
+  blocks::BlockedSurfaceOptions blocked;
+  blocked.blocks = block_count;
+  blocked.exchange = exchange;
+  if (pieces) {
+    blocked.streamed = true;
+    blocked.piece_done = [&](std::size_t block, const Mesh& piece) {
+      files.add_mesh(blocks::piece_path(out, block), piece, piece_options);
+    };
+    blocked.seams_done = [&](const Mesh& seams) {
+      with_seams = !seams.faces.empty();
+      if (with_seams) files.add_mesh(blocks::seams_path(out), seams, piece_options);
+    };
+  }
   std::optional<ComputedSurface> surface_or_none =
-      block_count > 0
-          ? compute_blocks_with_progress(s.atoms, compute_options(), block_count, exchange, quiet, progress, out,
-                                         pieces ? write_piece : std::function<void(std::size_t, const Mesh&)>{})
-          : compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
-  if (!surface_or_none) return 0;  // another process of the launch writes the outputs
+      block_count > 0 ? compute_blocks_with_progress(s.atoms, compute_options(), blocked, quiet, progress, out)
+                      : compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
+  if (!surface_or_none) {  // another process of the launch writes the index and the reports
+    files.commit();
+    return 0;
+  }
   const ComputedSurface& computed = *surface_or_none;
   const Mesh& surface = computed.mesh;
   report.seconds.surface = computed.seconds.union_;
@@ -269,7 +289,7 @@ int SurfaceCommand::run() const {
       report.exact ? exact_atom_area(computed.exact, outer_only) : measures.atom_area;
 
   if (pieces)
-    files.add_text(out, blocks::pvtp_index(out, block_count));
+    files.add_text(out, blocks::pvtp_index(out, block_count, with_seams));
   else
     add_surface_files(*this, out, surface, written, surface_check_options(computed, threads), inputs, outputs, files);
   if (computed.stern) report.stern = add_stern_file(*this, *computed.stern, s.atoms, files);

@@ -60,15 +60,6 @@ namespace {
 std::vector<std::int64_t> match_shells(const Mesh& mesh, const MeasuredComponents& m,
                                        const SphereArrangement& arrangement) {
   const std::size_t atoms = arrangement.area_per_sphere.size();
-  // The shells each atom lines (an atom may line the outer surface and a cavity): CSR.
-  std::vector<std::uint32_t> first(atoms + 1, 0);
-  for (const ArrangementPatch& p : arrangement.patches) ++first[p.sphere + 1];
-  for (std::size_t a = 0; a < atoms; ++a) first[a + 1] += first[a];
-  std::vector<std::uint32_t> shells(arrangement.patches.size());
-  {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (const ArrangementPatch& p : arrangement.patches) shells[fill[p.sphere]++] = p.shell;
-  }
   // The atoms each component's faces come from, once each.
   std::vector<std::vector<std::uint32_t>> atoms_of(m.parts.count);
   std::vector<std::uint32_t> seen_in(atoms, std::numeric_limits<std::uint32_t>::max());
@@ -79,15 +70,35 @@ std::vector<std::int64_t> match_shells(const Mesh& mesh, const MeasuredComponent
     seen_in[t] = c;
     atoms_of[c].push_back(t);
   }
+  std::vector<std::vector<std::uint32_t>> in_order;
+  in_order.reserve(m.order.size());
+  for (std::size_t c : m.order) in_order.push_back(std::move(atoms_of[c]));
+  return shells_of_atom_sets(in_order, arrangement);
+}
+
+}  // namespace
+
+std::vector<std::int64_t> shells_of_atom_sets(std::span<std::vector<std::uint32_t>> atoms_of,
+                                              const SphereArrangement& arrangement) {
+  const std::size_t atoms = arrangement.area_per_sphere.size();
+  // The shells each atom lines (an atom may line the outer surface and a cavity): CSR.
+  std::vector<std::uint32_t> first(atoms + 1, 0);
+  for (const ArrangementPatch& p : arrangement.patches) ++first[p.sphere + 1];
+  for (std::size_t a = 0; a < atoms; ++a) first[a + 1] += first[a];
+  std::vector<std::uint32_t> shells(arrangement.patches.size());
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (const ArrangementPatch& p : arrangement.patches) shells[fill[p.sphere]++] = p.shell;
+  }
   // Each component follows the shell whose atoms are most like its own (Jaccard index).
   std::vector<std::int64_t> out;
-  out.reserve(m.order.size());
+  out.reserve(atoms_of.size());
   std::vector<std::uint32_t> shared(arrangement.shells.size(), 0);
   std::vector<std::uint32_t> touched;
-  for (std::size_t c : m.order) {
-    std::vector<std::uint32_t>& own = atoms_of[c];
+  for (std::vector<std::uint32_t>& own : atoms_of) {
     std::sort(own.begin(), own.end());
     own.erase(std::unique(own.begin(), own.end()), own.end());
+    own.erase(std::remove_if(own.begin(), own.end(), [&](std::uint32_t a) { return a >= atoms; }), own.end());
     touched.clear();
     for (std::uint32_t a : own)
       for (std::uint32_t k = first[a]; k < first[a + 1]; ++k) {
@@ -111,8 +122,6 @@ std::vector<std::int64_t> match_shells(const Mesh& mesh, const MeasuredComponent
   }
   return out;
 }
-
-}  // namespace
 
 std::vector<std::int64_t> shells_of_components(const Mesh& mesh, const SphereArrangement& arrangement) {
   return match_shells(mesh, measured_components(mesh), arrangement);

@@ -63,6 +63,17 @@ class MpiExchange final : public blocks::BlockExchange {
     return all;
   }
 
+  std::string broadcast(const std::string& bytes) override {
+    std::uint64_t n = bytes.size();
+    check(MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
+    std::string out = rank_ == 0 ? bytes : std::string(n, '\0');
+    for (std::size_t at = 0; at < n; at += kPart)
+      check(MPI_Bcast(out.data() + at, static_cast<int>(std::min<std::size_t>(kPart, n - at)), MPI_BYTE, 0,
+                      MPI_COMM_WORLD),
+            "MPI_Bcast");
+    return out;
+  }
+
  private:
   int rank_ = 0, size_ = 1;
 };

@@ -1,0 +1,28 @@
+#!/bin/bash
+# Peak memory per process of the spatial blocks (docs/scale-out.md, "Memory"): one process
+# without blocks, --blocks 1, 2, 4 and 8 written as .pvtp pieces, and mpirun -np 2 and -np 4
+# (one block per process), each process under /usr/bin/time -v: wall time, processor time
+# (user + system) and peak resident memory. Usage: bench/block_memory.sh STRUCTURE [MOLSURF]
+set -euo pipefail
+structure="$1"
+molsurf="${2:-build/release/molsurf}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+run() {  # label, then the command; one line per process
+  local label="$1"; shift
+  (cd "$work" && "$@" > /dev/null 2> time.txt) || { cat "$work/time.txt"; exit 1; }
+  awk -v label="$label" '
+    /User time/ { cpu = $NF }
+    /System time/ { cpu += $NF }
+    /Elapsed \(wall clock\)/ { n = split($NF, t, ":"); s = (n == 3) ? t[1] * 3600 + t[2] * 60 + t[3] : t[1] * 60 + t[2] }
+    /Maximum resident set size/ { printf "%-22s wall %7.1f s  cpu %7.1f s  peak %7.0f MB\n", label, s, cpu, $NF / 1024 }' "$work/time.txt"
+}
+abs="$(realpath "$structure")"
+bin="$(realpath "$molsurf")"
+run "one process" /usr/bin/time -v "$bin" "$abs" -o one.vtp -q
+for n in 1 2 4 8; do
+  run "--blocks $n" /usr/bin/time -v "$bin" "$abs" --blocks "$n" -o blocks.pvtp -q
+done
+for n in 2 4; do
+  run "mpirun -np $n" mpirun --oversubscribe --allow-run-as-root -np "$n" /usr/bin/time -v "$bin" "$abs" -o mpi.pvtp -q
+done

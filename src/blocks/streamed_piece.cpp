@@ -1,0 +1,244 @@
+#include "blocks/streamed_piece.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace molsurf::blocks {
+
+namespace {
+
+constexpr std::uint8_t kFar = 255;
+
+// Per vertex: its rings from the seam (0 on it), kFar beyond `rings`.
+std::vector<std::uint8_t> rings_from_seam(const Mesh& mesh, int rings) {
+  std::vector<std::uint8_t> ring(mesh.vertices.size(), kFar);
+  for (const auto& e : seam_edges(mesh)) ring[e[0]] = ring[e[1]] = 0;
+  // Each sweep carries every distance at least one ring further.
+  for (int sweep = 0; sweep < rings; ++sweep)
+    for (const Triangle& t : mesh.faces) {
+      const std::uint8_t least = std::min({ring[t[0]], ring[t[1]], ring[t[2]]});
+      if (least >= rings) continue;
+      for (Index v : t) ring[v] = std::min<std::uint8_t>(ring[v], least + 1);
+    }
+  return ring;
+}
+
+// The faces `keep` marks, on their own vertices (in first use order), tags kept.
+Mesh faces_marked(const Mesh& mesh, std::span<const std::uint8_t> keep) {
+  Mesh out;
+  std::vector<Index> vertex_of(mesh.vertices.size(), ~Index{0});
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!keep[f]) continue;
+    Triangle t = mesh.faces[f];
+    for (Index& v : t) {
+      if (vertex_of[v] == ~Index{0}) {
+        vertex_of[v] = static_cast<Index>(out.vertices.size());
+        out.vertices.push_back(mesh.vertices[v]);
+      }
+      v = vertex_of[v];
+    }
+    out.faces.push_back(t);
+    out.face_tags.push_back(mesh.tag(f));
+  }
+  return out;
+}
+
+BoundingBox sphere_box(const Atom& atom, const SphereOptions& spheres, double reach) {
+  const double r = sphere_radius(atom, spheres) + reach;
+  BoundingBox box;
+  box.extend(atom.centre - Vec3{r, r, r});
+  box.extend(atom.centre + Vec3{r, r, r});
+  return box;
+}
+
+// The boxes of some atoms' spheres grown by kBorderReach, found by place.
+class AtomBoxGrid {
+ public:
+  AtomBoxGrid(std::vector<BoundingBox> boxes, double cell) : boxes_(std::move(boxes)), cell_(cell) {
+    for (std::uint32_t a = 0; a < boxes_.size(); ++a) for_cells(boxes_[a], [&](std::uint64_t key) { cells_[key].push_back(a); });
+  }
+  bool meets(const BoundingBox& box) const {
+    bool found = false;
+    for_cells(box, [&](std::uint64_t key) {
+      if (found) return;
+      const auto it = cells_.find(key);
+      if (it == cells_.end()) return;
+      for (std::uint32_t a : it->second)
+        if (boxes_[a].overlaps(box)) {
+          found = true;
+          return;
+        }
+    });
+    return found;
+  }
+
+ private:
+  template <class F>
+  void for_cells(const BoundingBox& box, F&& f) const {
+    std::int64_t lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = static_cast<std::int64_t>(std::floor(box.min[k] / cell_));
+      hi[k] = static_cast<std::int64_t>(std::floor(box.max[k] / cell_));
+    }
+    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
+          f((static_cast<std::uint64_t>(x & 0x1fffff) << 42) | (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
+            static_cast<std::uint64_t>(z & 0x1fffff));
+  }
+  std::vector<BoundingBox> boxes_;
+  double cell_;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+};
+
+std::uint64_t edge_key(Index a, Index b) { return (static_cast<std::uint64_t>(a) << 32) | b; }
+
+}  // namespace
+
+double six_volume_about(const Mesh& mesh, std::size_t face, const Vec3& origin) {
+  const Triangle& t = mesh.faces[face];
+  const Vec3 a = mesh.vertices[t[0]] - origin, b = mesh.vertices[t[1]] - origin, c = mesh.vertices[t[2]] - origin;
+  return dot(a, cross(b, c));
+}
+
+double stray_of(const Mesh& mesh, std::size_t face, std::span<const Atom> atoms, const SphereOptions& spheres) {
+  const std::int32_t tag = mesh.tag(face);
+  if (tag < 0 || static_cast<std::size_t>(tag) >= atoms.size()) return HUGE_VAL;
+  const BoundingBox own = sphere_box(atoms[static_cast<std::size_t>(tag)], spheres, 0);
+  const BoundingBox box = bounding_box(mesh, face);
+  double out = 0;
+  for (int k = 0; k < 3; ++k) out = std::max({out, own.min[k] - box.min[k], box.max[k] - own.max[k]});
+  return out;
+}
+
+SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const SphereOptions& spheres,
+                       std::span<const std::uint32_t> block_of, const Vec3& origin) {
+  const Mesh& mesh = piece.mesh;
+  const std::size_t faces = mesh.faces.size();
+  const std::vector<std::uint8_t> ring = rings_from_seam(mesh, kBandRings);
+  std::vector<std::uint8_t> in_band(faces), on_band_vertex(mesh.vertices.size(), 0);
+  std::vector<std::uint8_t> band_atom(atoms.size(), 0);
+  BoundingBox written_box;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const Triangle& t = mesh.faces[f];
+    in_band[f] = std::min({ring[t[0]], ring[t[1]], ring[t[2]]}) <= kBandRings;
+    if (in_band[f]) {
+      for (Index v : t) on_band_vertex[v] = 1;
+      band_atom[static_cast<std::size_t>(mesh.tag(f))] = 1;
+    } else {
+      written_box.extend(bounding_box(mesh, f));
+    }
+  }
+
+  // The border: written faces whose box meets the grown sphere box of an atom of another
+  // block or of an atom with band faces. A face of another block, or a band face after the
+  // seams' cleanup, lies within its own atom's grown box (stray_of, checked on every face),
+  // so any face it could cross or touch is kept here.
+  std::vector<BoundingBox> boxes;
+  double cell = 0;
+  for (std::size_t a = 0; a < atoms.size(); ++a) {
+    if (block_of[a] == piece.block && !band_atom[a]) continue;
+    const BoundingBox box = sphere_box(atoms[a], spheres, kBorderReach);
+    if (written_box.empty() || !box.overlaps(written_box)) continue;
+    cell = std::max(cell, box.max.x - box.min.x);
+    boxes.push_back(box);
+  }
+  const AtomBoxGrid near(std::move(boxes), std::max(cell, 1.0));
+  std::vector<std::uint8_t> in_border(faces, 0), written(faces, 0);
+  SplitPiece out;
+  StreamedPiece& kept = out.kept;
+  for (std::size_t f = 0; f < faces; ++f) {
+    if (in_band[f]) continue;
+    written[f] = 1;
+    in_border[f] = near.meets(bounding_box(mesh, f));
+    kept.stray = std::max(kept.stray, stray_of(mesh, f, atoms, spheres));
+  }
+  {
+    std::unordered_set<std::uint64_t> outside;  // directed edges of written faces not in the border
+    for (std::size_t f = 0; f < faces; ++f)
+      if (written[f] && !in_border[f])
+        for (int k = 0; k < 3; ++k) outside.insert(edge_key(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]));
+    for (std::size_t f = 0; f < faces; ++f)
+      if (in_band[f] || in_border[f])
+        for (int k = 0; k < 3; ++k)
+          kept.border_open_edges += outside.count(edge_key(mesh.faces[f][(k + 1) % 3], mesh.faces[f][k]));
+  }
+
+  kept.block = piece.block;
+  kept.band = faces_marked(mesh, in_band);
+  kept.border = faces_marked(mesh, in_border);
+  out.written = faces_marked(mesh, written);
+  kept.seam = std::move(piece.seam);
+
+  // The written faces' summary.
+  const Mesh& w = out.written;
+  kept.faces = w.faces.size();
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) kept.vertices += ring[v] > kBandRings && !on_band_vertex[v];
+  kept.quality = mesh_quality(w);
+  std::vector<double> area(w.faces.size());
+  std::vector<double> six_volume(w.faces.size());
+  for (std::size_t f = 0; f < w.faces.size(); ++f) {
+    area[f] = face_area(w, f);
+    six_volume[f] = six_volume_about(w, f, origin);
+    kept.area += area[f];
+    kept.volume += six_volume[f] / 6;
+  }
+  {
+    std::unordered_map<std::uint32_t, double> by_atom;
+    std::vector<std::uint32_t> order;
+    for (std::size_t f = 0; f < w.faces.size(); ++f) {
+      const auto a = static_cast<std::uint32_t>(w.tag(f));
+      const auto [it, inserted] = by_atom.try_emplace(a, 0.0);
+      if (inserted) order.push_back(a);
+      it->second += area[f];
+    }
+    std::sort(order.begin(), order.end());
+    for (std::uint32_t a : order) kept.atom_area.push_back({a, by_atom[a]});
+  }
+  const Components parts = connected_components(w);
+  kept.parts.resize(parts.count);
+  std::vector<std::uint8_t> is_joint(w.vertices.size(), 0);
+  // A written vertex is a joint when a band face has it (the written mesh's vertices are
+  // the piece's in first use order).
+  {
+    std::vector<Index> piece_vertex(w.vertices.size(), 0);
+    std::vector<Index> seen(mesh.vertices.size(), ~Index{0});
+    Index next = 0;
+    for (std::size_t f = 0; f < faces; ++f) {
+      if (!written[f]) continue;
+      for (Index v : mesh.faces[f])
+        if (seen[v] == ~Index{0}) seen[v] = next, piece_vertex[next++] = v;
+    }
+    for (std::size_t v = 0; v < w.vertices.size(); ++v) is_joint[v] = on_band_vertex[piece_vertex[v]];
+  }
+  std::vector<std::uint8_t> joint_listed(w.vertices.size(), 0);
+  for (std::size_t f = 0; f < w.faces.size(); ++f) {
+    WrittenPart& p = kept.parts[parts.face_component[f]];
+    ++p.faces;
+    p.area += area[f];
+    p.volume += six_volume[f] / 6;
+    p.atoms.push_back(static_cast<std::uint32_t>(w.tag(f)));
+    for (Index v : w.faces[f])
+      if (is_joint[v] && !joint_listed[v]) {
+        joint_listed[v] = 1;
+        p.joints.push_back(w.vertices[v]);
+      }
+  }
+  for (WrittenPart& p : kept.parts) {
+    std::sort(p.atoms.begin(), p.atoms.end());
+    p.atoms.erase(std::unique(p.atoms.begin(), p.atoms.end()), p.atoms.end());
+  }
+
+  kept.stats = piece.stats;
+  kept.before = piece.before;
+  kept.cleanup = piece.cleanup;
+  kept.seconds_union = piece.seconds_union;
+  kept.seconds_cleanup = piece.seconds_cleanup;
+  kept.seconds_check = piece.seconds_check;
+  piece.mesh = {};
+  return out;
+}
+
+}  // namespace molsurf::blocks

@@ -1,0 +1,89 @@
+#pragma once
+// A block's piece split for the streamed job (streamed_surface.hpp): the faces the seams'
+// cleanup cannot change are written at once, and only what the join needs is kept: the seam
+// band (every face within kBandRings rings of the seam: the seams' cleanup changes only
+// faces with a vertex within kSeamCleanupBand rings, and a flip of an edge of such a face
+// reaches one ring further), the written faces that a face of another block or of the band
+// could come near (the border, for the check), and the written faces' summary (area, volume,
+// per-atom areas, quality, and the connected parts with the vertices by which they join
+// the band).
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "blocks/piece_bytes.hpp"
+#include "blocks/piece_job.hpp"
+#include "blocks/seam.hpp"
+#include "molsurf/atoms.hpp"
+#include "molsurf/mesh.hpp"
+#include "molsurf/surface.hpp"
+
+namespace molsurf::blocks {
+
+inline constexpr int kBandRings = kSeamCleanupBand + 1;
+
+// How far a face may lie outside the box of its atom's sphere (angstrom) for the border to
+// hold every face that another block's face can reach. Every face is measured against it
+// (the polyhedra's area correction and the cleanups move faces by hundredths of an angstrom).
+inline constexpr double kBorderReach = 0.5;
+
+struct AtomArea {
+  std::uint32_t atom = 0;
+  double area = 0;
+};
+
+// One connected part of a piece's written faces.
+struct WrittenPart {
+  std::uint64_t faces = 0;
+  double area = 0, volume = 0;       // volume: by the divergence theorem about the job's origin
+  std::vector<std::uint32_t> atoms;  // of its faces, increasing, once each
+  std::vector<Vec3> joints;          // its vertices that band faces share (exact coordinates)
+};
+
+// What a piece leaves for the join once its written faces are on disk.
+struct StreamedPiece {
+  std::size_t block = 0;
+  Mesh band;                    // the seam band, on its own vertices; tags: atoms
+  std::vector<SeamPoint> seam;  // the seam's points, for the glue
+  Mesh border;                  // written faces near other blocks' or the band's atoms
+  // Directed edges of band and border faces whose reverse is a written face outside the
+  // border: where the check of band and border together finds its only boundary.
+  std::uint64_t border_open_edges = 0;
+  // The written faces: counts (vertices: those no band face has), area, volume about the
+  // origin, quality, how far a face lies outside its atom's sphere box, per-atom areas.
+  std::uint64_t faces = 0, vertices = 0;
+  double area = 0, volume = 0, stray = 0;
+  Quality quality;
+  std::vector<AtomArea> atom_area;
+  std::vector<WrittenPart> parts;
+  // The piece's own job.
+  BlockStats stats;
+  Quality before;
+  CleanupStats cleanup;
+  double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
+};
+
+struct SplitPiece {
+  Mesh written;  // to its file now
+  StreamedPiece kept;
+};
+
+// `piece` (checked but for its seam) split as above. `block_of`: each atom's block;
+// `origin`: the point every piece's volume is taken about.
+SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const SphereOptions& spheres,
+                       std::span<const std::uint32_t> block_of, const Vec3& origin);
+
+// The kept part as bytes (streamed_piece_bytes.cpp), appended to `out`; and the pieces
+// `bytes` holds (std::invalid_argument for bytes append_streamed_piece did not write).
+void append_streamed_piece(std::string& out, const StreamedPiece& piece);
+std::vector<StreamedPiece> read_streamed_pieces(std::string_view bytes);
+
+// Six times the signed volume of the tetrahedron from `origin` to face f.
+double six_volume_about(const Mesh& mesh, std::size_t face, const Vec3& origin);
+// How far face f lies outside the box of its atom's sphere (0 inside).
+double stray_of(const Mesh& mesh, std::size_t face, std::span<const Atom> atoms, const SphereOptions& spheres);
+
+}  // namespace molsurf::blocks

@@ -1,0 +1,344 @@
+#include "blocks/streamed_surface.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+
+#include "blocks/block_piece.hpp"
+#include "blocks/piece_job.hpp"
+#include "blocks/seam.hpp"
+#include "blocks/streamed_piece.hpp"
+#include "mesh/topology.hpp"
+#include "molsurf/compute_areas.hpp"
+#include "molsurf/error.hpp"
+#include "molsurf/mesh_check.hpp"
+#include "molsurf/surface_measures.hpp"
+#include "surface/cleanup.hpp"
+
+namespace molsurf::blocks {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct PointKey {
+  std::array<std::uint64_t, 3> bits;
+  bool operator==(const PointKey&) const = default;
+};
+
+struct PointHash {
+  std::size_t operator()(const PointKey& k) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (std::uint64_t b : k.bits) h = (h ^ b) * 0xff51afd7ed558ccdull, h ^= h >> 33;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+PointKey key_of(const Vec3& p) {
+  return {std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0),
+          std::bit_cast<std::uint64_t>(p.z + 0.0)};
+}
+
+// The point every piece's volume is taken about: the atoms' box centre, the same on every
+// process (small coordinates about it lose little to cancellation).
+Vec3 volume_origin(std::span<const Atom> atoms) {
+  BoundingBox box;
+  for (const Atom& a : atoms) box.extend(a.centre);
+  return box.empty() ? Vec3{} : 0.5 * (box.min + box.max);
+}
+
+std::uint32_t root_of(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// The seams' band glued and, with cleanup, cleaned with both sides in view: everything
+// beyond kSeamCleanupBand rings of the seams frozen, and every piece's border added
+// (frozen, on vertices of its own) so no edit crosses a written face.
+Mesh joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, const BlockPartition& partition,
+                  std::vector<StreamedPiece>& pieces, ComputedSurface& result) {
+  std::vector<Mesh> bands;
+  std::vector<std::vector<SeamPoint>> seams;
+  for (StreamedPiece& p : pieces) {
+    bands.push_back(std::move(p.band));
+    seams.push_back(std::move(p.seam));
+  }
+  std::vector<std::uint8_t> on_seam;
+  Mesh glued = glue_pieces(bands, seams, exact_same_point(atoms, options.spheres, partition.contained), &on_seam);
+  bands = {};
+  seams = {};
+  if (!options.cleanup || glued.faces.empty()) return glued;
+  const auto clock = Clock::now();
+  std::vector<std::uint8_t> frozen = frozen_beyond(glued, on_seam, kSeamCleanupBand);
+  const std::size_t band_faces = glued.faces.size();
+  for (const StreamedPiece& p : pieces) glued.append(p.border);
+  // The borders' faces are told apart by their tags (-2 - atom): none of them can change,
+  // as every vertex they have is frozen and no edge of theirs is shared with a band face.
+  for (std::size_t f = band_faces; f < glued.faces.size(); ++f) glued.face_tags[f] = -2 - glued.face_tags[f];
+  frozen.resize(glued.vertices.size(), 1);
+  CleanupOptions cleanup = options.cleanup_options;
+  cleanup.measure_after = false;
+  add_cleanup(result, improve_surface(glued, cleanup, frozen));
+  std::vector<std::uint8_t> band(glued.faces.size());
+  for (std::size_t f = 0; f < glued.faces.size(); ++f) band[f] = glued.face_tags[f] >= 0;
+  keep_alive_faces(glued, band);
+  drop_unused_vertices(glued);
+  result.seconds.cleanup += seconds_since(clock);
+  return glued;
+}
+
+// The cleaned seams and every border, glued where they share vertices (by exact position),
+// checked as a piece is: its only boundary where the borders meet written faces left out.
+void check_seams(const Mesh& seams, std::span<const StreamedPiece> pieces, const ComputeSurfaceOptions& options,
+                 std::span<const Atom> atoms) {
+  Mesh together = seams;
+  std::unordered_map<PointKey, Index, PointHash> vertex_at;
+  for (Index v = 0; v < together.vertices.size(); ++v) vertex_at.emplace(key_of(together.vertices[v]), v);
+  std::uint64_t open_edges = 0;
+  double stray = 0;
+  for (const StreamedPiece& p : pieces) {
+    open_edges += p.border_open_edges;
+    stray = std::max(stray, p.stray);
+    for (std::size_t f = 0; f < p.border.faces.size(); ++f) {
+      Triangle t = p.border.faces[f];
+      for (Index& v : t) {
+        const auto [it, added] =
+            vertex_at.try_emplace(key_of(p.border.vertices[v]), static_cast<Index>(together.vertices.size()));
+        if (added) together.vertices.push_back(p.border.vertices[v]);
+        v = it->second;
+      }
+      together.faces.push_back(t);
+      together.face_tags.push_back(p.border.tag(f));
+    }
+  }
+  for (std::size_t f = 0; f < seams.faces.size(); ++f) stray = std::max(stray, stray_of(seams, f, atoms, options.spheres));
+  if (stray > kBorderReach)
+    throw Error("--blocks: a face lies " + std::to_string(stray) + " A outside its atom's sphere, beyond the " +
+                std::to_string(kBorderReach) + " A the check of the seams covers; write one file (--merge)");
+  MeshCheckOptions check_options;
+  check_options.self_intersections = options.check_self_intersections;
+  const MeshCheck check = check_mesh(together, check_options);
+  if (const auto problems = piece_problems(check, open_edges); !problems.empty()) {
+    std::string text = "the seams between the blocks, with the faces near them, have";
+    for (const std::string& p : problems) text += " " + p + ";";
+    throw SurfaceCheckFailed(check, std::move(together), {text});
+  }
+}
+
+// The surface's measures from the pieces' summaries and the seams: totals, per-atom areas,
+// and the components, each piece's written parts joined through the seams' faces.
+void merge_measures(const Mesh& seams, std::span<const StreamedPiece> pieces, std::size_t atom_count,
+                    const Vec3& origin, const SphereArrangement* exact, ComputedSurface& result) {
+  SurfaceMeasures& m = result.measures;
+  m.atom_area.assign(atom_count, 0);
+  const Components band = connected_components(seams);
+  std::size_t parts = band.count;
+  for (const StreamedPiece& p : pieces) parts += p.parts.size();
+  std::vector<std::uint32_t> parent(parts);
+  std::iota(parent.begin(), parent.end(), 0u);
+  std::vector<ComponentMeasure> node(parts);
+  std::vector<std::vector<std::uint32_t>> atoms_of(parts);
+  std::vector<std::uint32_t> vertex_part(seams.vertices.size(), 0);
+  for (std::size_t f = 0; f < seams.faces.size(); ++f) {
+    const std::uint32_t c = band.face_component[f];
+    const double area = face_area(seams, f);
+    ComponentMeasure& n = node[c];
+    ++n.faces;
+    n.area += area;
+    n.volume += six_volume_about(seams, f, origin) / 6;
+    atoms_of[c].push_back(static_cast<std::uint32_t>(seams.tag(f)));
+    m.atom_area[static_cast<std::size_t>(seams.tag(f))] += area;
+    for (Index v : seams.faces[f]) vertex_part[v] = c;
+  }
+  std::unordered_map<PointKey, std::uint32_t, PointHash> part_at;
+  for (Index v = 0; v < seams.vertices.size(); ++v) part_at.emplace(key_of(seams.vertices[v]), vertex_part[v]);
+  m.faces = seams.faces.size();
+  m.vertices = seams.vertices.size();
+  m.quality = mesh_quality(seams);
+  std::uint32_t next = static_cast<std::uint32_t>(band.count);
+  for (const StreamedPiece& p : pieces) {
+    m.faces += p.faces;
+    m.vertices += p.vertices;
+    combine_quality(m.quality, p.quality);
+    for (const AtomArea& a : p.atom_area) m.atom_area[a.atom] += a.area;
+    for (const WrittenPart& part : p.parts) {
+      const std::uint32_t k = next++;
+      node[k] = {part.faces, part.area, part.volume};
+      atoms_of[k] = part.atoms;
+      for (const Vec3& joint : part.joints) {
+        const auto it = part_at.find(key_of(joint));
+        if (it == part_at.end()) throw std::logic_error("compute_streamed_surface: a written face left the seams");
+        const std::uint32_t a = root_of(parent, k), b = root_of(parent, it->second);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  // Components in order of their first part, then reported as measure_components orders them.
+  std::vector<std::int64_t> component_of_root(parts, -1);
+  std::vector<ComponentMeasure> components;
+  std::vector<std::vector<std::uint32_t>> component_atoms;
+  for (std::uint32_t k = 0; k < parts; ++k) {
+    const std::uint32_t r = root_of(parent, k);
+    if (component_of_root[r] < 0) {
+      component_of_root[r] = static_cast<std::int64_t>(components.size());
+      components.emplace_back();
+      component_atoms.emplace_back();
+    }
+    const auto c = static_cast<std::size_t>(component_of_root[r]);
+    components[c].faces += node[k].faces;
+    components[c].area += node[k].area;
+    components[c].volume += node[k].volume;
+    component_atoms[c].insert(component_atoms[c].end(), atoms_of[k].begin(), atoms_of[k].end());
+  }
+  std::vector<std::size_t> order(components.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    const ComponentMeasure &a = components[x], &b = components[y];
+    if (a.cavity() != b.cavity()) return !a.cavity();
+    return a.area > b.area;
+  });
+  std::vector<std::vector<std::uint32_t>> atoms_in_order;
+  for (std::size_t c : order) {
+    m.components.push_back(components[c]);
+    m.area += components[c].area;
+    m.volume += components[c].volume;
+    atoms_in_order.push_back(std::move(component_atoms[c]));
+  }
+  if (exact) result.component_shells = shells_of_atom_sets(atoms_in_order, *exact);
+
+  // The whole surface's check, as its parts passed theirs: every piece but for its seam and
+  // band, the seams with the borders near them.
+  MeshCheck& check = result.check;
+  check.faces = m.faces;
+  check.vertices = m.vertices;
+  check.edges = 3 * m.faces / 2;
+  check.components = m.components.size();
+  check.euler_characteristic =
+      static_cast<long>(check.vertices) - static_cast<long>(check.edges) + static_cast<long>(check.faces);
+  check.area = m.area;
+  check.volume = m.volume;
+  check.quality = m.quality;
+}
+
+}  // namespace
+
+BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
+                                        const BlockPartition& partition, const BlockedSurfaceOptions& blocked) {
+  const auto start = Clock::now();
+  BlockedSurface out;
+  ComputedSurface& result = out.surface;
+  result.threads = options.threads;
+  auto report = [&](SurfaceStage stage, std::size_t done, std::size_t total) {
+    throw_if_cancelled(options.cancel);
+    if (options.progress) options.progress(stage, done, total);
+  };
+  const Vec3 origin = volume_origin(atoms);
+  // One block's piece: made, its written faces handed out and released, the rest kept.
+  auto make = [&](std::size_t b) {
+    SplitPiece split = split_piece(make_piece(atoms, partition, b, options, result.threads), atoms, options.spheres,
+                                   partition.block_of, origin);
+    if (blocked.piece_done) blocked.piece_done(b, split.written);
+    return std::move(split.kept);
+  };
+
+  report(SurfaceStage::union_, 0, partition.size());
+  std::vector<StreamedPiece> pieces;
+  BlockExchange* exchange = blocked.exchange;
+  const bool shared = exchange != nullptr && exchange->size() > 1;
+  if (!shared) {
+    for (std::size_t b = 0; b < partition.size(); ++b) {
+      pieces.push_back(make(b));
+      report(SurfaceStage::union_, b + 1, partition.size());
+    }
+  } else {
+    // Process r makes blocks r, r + size, ..., writes them itself and sends the first
+    // process what it kept (or what went wrong); the first tells every process whether the
+    // whole surface passed, and only then may they keep their files.
+    std::string bytes = "P";
+    try {
+      for (std::size_t b = static_cast<std::size_t>(exchange->rank()); b < partition.size();
+           b += static_cast<std::size_t>(exchange->size()))
+        append_streamed_piece(bytes, make(b));
+    } catch (const std::exception& e) {
+      bytes = std::string("E") + e.what();
+    }
+    const std::vector<std::string> gathered = exchange->gather(bytes);
+    if (exchange->rank() != 0) {
+      const std::string verdict = exchange->broadcast({});
+      if (!verdict.empty()) throw Error(verdict);
+      out.root = false;
+      return out;
+    }
+    try {
+      for (std::size_t k = 0; k < gathered.size(); ++k) {
+        const std::string_view b = gathered[k];
+        if (b.empty() || b[0] != 'P')
+          throw Error("process " + std::to_string(k) + " of " + std::to_string(gathered.size()) + ": " +
+                      std::string(b.empty() ? "no answer" : b.substr(1)));
+        for (StreamedPiece& p : read_streamed_pieces(b.substr(1))) pieces.push_back(std::move(p));
+      }
+    } catch (const std::exception& e) {
+      exchange->broadcast(e.what());
+      throw;
+    }
+    std::sort(pieces.begin(), pieces.end(),
+              [](const StreamedPiece& x, const StreamedPiece& y) { return x.block < y.block; });
+    report(SurfaceStage::union_, partition.size(), partition.size());
+  }
+  try {
+    if (pieces.size() != partition.size()) throw std::logic_error("compute_streamed_surface: a block without its piece");
+    Quality before;
+    for (const StreamedPiece& p : pieces) {
+      combine_quality(before, p.before);
+      if (options.cleanup) {
+        add_cleanup(result, p.cleanup);
+        result.cleanup->area_before += p.cleanup.area_before;
+      }
+      result.seconds.union_ += p.seconds_union;
+      result.seconds.cleanup += p.seconds_cleanup;
+      result.seconds.check += p.seconds_check;
+      BlockStats stats = p.stats;
+      stats.faces = p.faces;
+      out.blocks.push_back(stats);
+    }
+    report(SurfaceStage::check, 0, 1);
+    const Mesh seams = joined_seams(atoms, options, partition, pieces, result);
+    auto clock = Clock::now();
+    check_seams(seams, pieces, options, atoms);
+    result.seconds.check += seconds_since(clock);
+    report(SurfaceStage::check, 1, 1);
+
+    clock = Clock::now();
+    report(SurfaceStage::measures, 0, 1);
+    if (options.exact_areas) result.exact = compute_areas(atoms, options.spheres).arrangement;
+    merge_measures(seams, pieces, atoms.size(), origin, options.exact_areas ? &result.exact : nullptr, result);
+    result.check.self_intersections_checked = options.check_self_intersections;
+    result.seconds.measures = seconds_since(clock);
+    report(SurfaceStage::measures, 1, 1);
+    if (result.cleanup) {
+      result.cleanup->before = before;
+      result.cleanup->after = result.check.quality;
+      result.cleanup->area_after = result.check.area;
+    }
+    result.quality_before = before;
+    result.quality_after = result.check.quality;
+    if (blocked.seams_done) blocked.seams_done(seams);
+  } catch (const std::exception& e) {
+    if (shared) exchange->broadcast(e.what());
+    throw;
+  }
+  if (shared) exchange->broadcast({});
+  result.method = SurfaceMethod::one_pass;
+  result.seconds.total = seconds_since(start);
+  return out;
+}
+
+}  // namespace molsurf::blocks

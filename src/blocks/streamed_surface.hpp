@@ -1,0 +1,24 @@
+#pragma once
+// The blocked surface streamed to disk (`molsurf --blocks N -o NAME.pvtp`, and mpirun): each
+// piece is made, cleaned with its seam band frozen and checked as in the glued job, then
+// split (streamed_piece.hpp): its faces away from the seams go to their file at once and are
+// released, and only the seam band, the border and a summary are kept (on the first process,
+// which receives them from the others). The seam bands are then glued and cleaned with
+// both sides in view (the written faces near them frozen, as obstacles), checked together
+// with every border, and become one more piece. The report is merged from the summaries:
+// totals, per-atom areas, and the components joined through the band. The peak memory is
+// one piece's plus the bands and borders, not the whole surface's.
+#include <span>
+
+#include "blocks/block_partition.hpp"
+#include "blocks/blocked_surface.hpp"
+#include "molsurf/atoms.hpp"
+#include "molsurf/compute_surface.hpp"
+
+namespace molsurf::blocks {
+
+// `options`: the job's (surface_job_options), its thread count already set.
+BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
+                                        const BlockPartition& partition, const BlockedSurfaceOptions& blocked);
+
+}  // namespace molsurf::blocks
