@@ -386,6 +386,27 @@ TEST(BlocksCommand, RefusesAVolumeMeshAroundStreamedPieces) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "s_0.vtp"));
 }
 
+// Streamed pieces hold one block's spheres at a time, so --max-faces limits each block with
+// its halo: 1crn's 151 980 sphere faces in all are refused at 140 000, its four blocks are not
+// (the largest with its halo has 113 580); glued (--merge) the whole is held and refused, and a
+// block over the limit is named.
+TEST(BlocksCommand, TheFacesLimitHoldsPerBlockWhenStreamed) {
+  testing::TempDir dir;
+  const std::string input = "'" + kData + "/pdb/1crn.pdb'";
+  const auto whole = testing::run_molsurf(input + " --max-faces 140000 -o w.vtp", dir.path());
+  EXPECT_EQ(whole.exit_code, 1);
+  EXPECT_NE(whole.err.find("151980 faces"), std::string::npos) << whole.err;
+  const auto streamed = testing::run_molsurf(input + " --blocks 4 --max-faces 140000 -o s.pvtp -q", dir.path());
+  EXPECT_EQ(streamed.exit_code, 0) << streamed.err;
+  EXPECT_EQ(testing::run_molsurf("check s.pvtp", dir.path()).exit_code, 0);
+  const auto merged = testing::run_molsurf(input + " --blocks 4 --merge --max-faces 140000 -o m.vtp", dir.path());
+  EXPECT_EQ(merged.exit_code, 1);
+  const auto block = testing::run_molsurf(input + " --blocks 4 --max-faces 100000 -o b.pvtp", dir.path());
+  EXPECT_EQ(block.exit_code, 1);
+  EXPECT_NE(block.err.find("(block 3 of 4 with its halo)"), std::string::npos) << block.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "b_0.vtp"));
+}
+
 TEST(BlocksCommand, RefusesMergeWithoutBlocksOrIntoAnIndex) {
   testing::TempDir dir;
   const std::string input = "'" + kData + "/pdb/1crn.pdb'";

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <string>
@@ -12,6 +13,7 @@
 #include "blocks/block_partition.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_bytes.hpp"
+#include "blocks/pieces_of_all_blocks.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
 #include "blocks/streamed_surface.hpp"
@@ -75,7 +77,11 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   validate(requested);
   refuse_unsupported(requested);
   if (blocked.blocks == 0) throw Error("--blocks: at least 1 block");
-  const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, requested);
+  // Streamed, a process holds one block's spheres at a time: the limit on all spheres' faces
+  // applies to each block with its halo (below), not to the whole structure.
+  ComputeSurfaceOptions job = requested;
+  if (blocked.streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
+  const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, job);
 
   BlockedSurface out;
   ComputedSurface& result = out.surface;
@@ -88,44 +94,25 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
 
   const BlockPartition partition = partition_blocks(atoms, options.spheres, blocked.blocks);
   if (blocked.streamed) {
+    for (std::size_t b = 0; b < partition.size(); ++b)
+      check_sphere_resources(options.source.string() + " (block " + std::to_string(b + 1) + " of " +
+                                 std::to_string(partition.size()) + " with its halo)",
+                             block_atoms(atoms, partition, b).atoms, options.spheres, requested.max_sphere_faces);
     ComputeSurfaceOptions streamed = options;
     streamed.threads = result.threads;
     return compute_streamed_surface(atoms, streamed, partition, blocked);
   }
   report(SurfaceStage::union_, 0, partition.size());
-  std::vector<PieceMessage> messages;
-  BlockExchange* exchange = blocked.exchange;
-  if (exchange == nullptr || exchange->size() <= 1) {
-    for (std::size_t b = 0; b < partition.size(); ++b) {
-      messages.push_back(make_piece(atoms, partition, b, options, result.threads));
-      report(SurfaceStage::union_, b + 1, partition.size());
-    }
-  } else {
-    // Process r makes blocks r, r + size, ...; the first gathers them all (or what went wrong).
-    std::string bytes = "P";
-    try {
-      for (std::size_t b = static_cast<std::size_t>(exchange->rank()); b < partition.size();
-           b += static_cast<std::size_t>(exchange->size()))
-        append_piece(bytes, make_piece(atoms, partition, b, options, result.threads));
-    } catch (const std::exception& e) {
-      bytes = std::string("E") + e.what();
-    }
-    const std::vector<std::string> gathered = exchange->gather(bytes);
-    if (exchange->rank() != 0) {
-      out.root = false;
-      return out;
-    }
-    for (std::size_t k = 0; k < gathered.size(); ++k) {
-      const std::string_view b = gathered[k];
-      if (b.empty() || b[0] != 'P')
-        throw Error("process " + std::to_string(k) + " of " + std::to_string(gathered.size()) + ": " +
-                    std::string(b.empty() ? "no answer" : b.substr(1)));
-      for (PieceMessage& m : read_pieces(b.substr(1))) messages.push_back(std::move(m));
-    }
-    std::sort(messages.begin(), messages.end(),
-              [](const PieceMessage& x, const PieceMessage& y) { return x.block < y.block; });
-    report(SurfaceStage::union_, partition.size(), partition.size());
+  std::optional<std::vector<PieceMessage>> made = pieces_of_all_blocks<PieceMessage>(
+      partition.size(), blocked.exchange,
+      [&](std::size_t b) { return make_piece(atoms, partition, b, options, result.threads); }, append_piece,
+      [](std::string_view bytes) { return read_pieces(bytes); },
+      [&](std::size_t done) { report(SurfaceStage::union_, done, partition.size()); });
+  if (!made) {
+    out.root = false;
+    return out;
   }
+  std::vector<PieceMessage>& messages = *made;
   if (messages.size() != partition.size()) throw std::logic_error("compute_blocked_surface: a block without its piece");
   std::vector<Mesh> pieces;
   std::vector<std::vector<SeamPoint>> seams;

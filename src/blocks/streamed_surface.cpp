@@ -4,6 +4,7 @@
 #include <bit>
 #include <chrono>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
+#include "blocks/pieces_of_all_blocks.hpp"
 #include "blocks/streamed_piece.hpp"
 #include "mesh/topology.hpp"
 #include "molsurf/compute_areas.hpp"
@@ -250,49 +252,28 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
   };
 
   report(SurfaceStage::union_, 0, partition.size());
-  std::vector<StreamedPiece> pieces;
   BlockExchange* exchange = blocked.exchange;
   const bool shared = exchange != nullptr && exchange->size() > 1;
-  if (!shared) {
-    for (std::size_t b = 0; b < partition.size(); ++b) {
-      pieces.push_back(make(b));
-      report(SurfaceStage::union_, b + 1, partition.size());
-    }
-  } else {
-    // Process r makes blocks r, r + size, ..., writes them itself and sends the first
-    // process what it kept (or what went wrong); the first tells every process whether the
-    // whole surface passed, and only then may they keep their files.
-    std::string bytes = "P";
-    try {
-      for (std::size_t b = static_cast<std::size_t>(exchange->rank()); b < partition.size();
-           b += static_cast<std::size_t>(exchange->size()))
-        append_streamed_piece(bytes, make(b));
-    } catch (const std::exception& e) {
-      bytes = std::string("E") + e.what();
-    }
-    const std::vector<std::string> gathered = exchange->gather(bytes);
-    if (exchange->rank() != 0) {
-      const std::string verdict = exchange->broadcast({});
-      if (!verdict.empty()) throw Error(verdict);
-      out.root = false;
-      return out;
-    }
-    try {
-      for (std::size_t k = 0; k < gathered.size(); ++k) {
-        const std::string_view b = gathered[k];
-        if (b.empty() || b[0] != 'P')
-          throw Error("process " + std::to_string(k) + " of " + std::to_string(gathered.size()) + ": " +
-                      std::string(b.empty() ? "no answer" : b.substr(1)));
-        for (StreamedPiece& p : read_streamed_pieces(b.substr(1))) pieces.push_back(std::move(p));
-      }
-    } catch (const std::exception& e) {
-      exchange->broadcast(e.what());
-      throw;
-    }
-    std::sort(pieces.begin(), pieces.end(),
-              [](const StreamedPiece& x, const StreamedPiece& y) { return x.block < y.block; });
-    report(SurfaceStage::union_, partition.size(), partition.size());
+  // Each process writes its own pieces and sends the first what it kept (or what went
+  // wrong); the first tells every process whether the whole surface passed, and only then
+  // may they keep their files.
+  std::optional<std::vector<StreamedPiece>> made;
+  try {
+    made = pieces_of_all_blocks<StreamedPiece>(
+        partition.size(), exchange, make, append_streamed_piece,
+        [](std::string_view bytes) { return read_streamed_pieces(bytes); },
+        [&](std::size_t done) { report(SurfaceStage::union_, done, partition.size()); });
+  } catch (const std::exception& e) {
+    if (shared && exchange->rank() == 0) exchange->broadcast(e.what());
+    throw;
   }
+  if (!made) {
+    const std::string verdict = exchange->broadcast({});
+    if (!verdict.empty()) throw Error(verdict);
+    out.root = false;
+    return out;
+  }
+  std::vector<StreamedPiece>& pieces = *made;
   try {
     if (pieces.size() != partition.size()) throw std::logic_error("compute_streamed_surface: a block without its piece");
     Quality before;

@@ -222,7 +222,8 @@ int SurfaceCommand::run() const {
   const Structure s = read_structure(structure, read_options());
   report.seconds.read = seconds_since(read_start);
   // compute_surface refuses the same; checked here too so that nothing is printed first.
-  check_sphere_resources(structure, s.atoms, spheres, max_faces);
+  // Streamed pieces hold one block's spheres at a time: the blocked job checks each block.
+  if (!pieces) check_sphere_resources(structure, s.atoms, spheres, max_faces);
   // A job that may fill a large share of the memory trades a little time for a smaller
   // footprint (allocation.hpp).
   const std::uint64_t memory = max_memory_gb > 0 ? max_memory_bytes() : available_memory_bytes();
