@@ -7,18 +7,29 @@
 
 namespace molsurf::blocks {
 
+void put_mesh(std::string& out, const Mesh& mesh) {
+  put_array(out, mesh.vertices);
+  put_array(out, mesh.faces);
+  put_array(out, mesh.face_tags);
+}
+
+Mesh get_mesh(ByteReader& in) {
+  Mesh mesh;
+  mesh.vertices = in.get_array<Vec3>();
+  mesh.faces = in.get_array<Triangle>();
+  mesh.face_tags = in.get_array<std::int32_t>();
+  if (mesh.face_tags.size() != mesh.faces.size()) throw std::invalid_argument("piece bytes: one tag per face");
+  for (const Triangle& t : mesh.faces)
+    for (Index v : t)
+      if (v >= mesh.vertices.size()) throw std::invalid_argument("piece bytes: a face with no such vertex");
+  return mesh;
+}
+
 void append_piece(std::string& out, const PieceMessage& piece) {
   put(out, static_cast<std::uint64_t>(piece.block));
-  put_array(out, piece.mesh.vertices);
-  put_array(out, piece.mesh.faces);
-  put_array(out, piece.mesh.face_tags);
+  put_mesh(out, piece.mesh);
   put_array(out, piece.seam);
-  put(out, piece.stats);
-  put(out, piece.before);
-  put(out, piece.cleanup);
-  put(out, piece.seconds_union);
-  put(out, piece.seconds_cleanup);
-  put(out, piece.seconds_check);
+  put_piece_numbers(out, piece);
 }
 
 std::vector<PieceMessage> read_pieces(std::string_view bytes) {
@@ -27,19 +38,9 @@ std::vector<PieceMessage> read_pieces(std::string_view bytes) {
   while (!in.done()) {
     PieceMessage p;
     p.block = static_cast<std::size_t>(in.get<std::uint64_t>());
-    p.mesh.vertices = in.get_array<Vec3>();
-    p.mesh.faces = in.get_array<Triangle>();
-    p.mesh.face_tags = in.get_array<std::int32_t>();
+    p.mesh = get_mesh(in);
     p.seam = in.get_array<SeamPoint>();
-    p.stats = in.get<BlockStats>();
-    p.before = in.get<Quality>();
-    p.cleanup = in.get<CleanupStats>();
-    p.seconds_union = in.get<double>();
-    p.seconds_cleanup = in.get<double>();
-    p.seconds_check = in.get<double>();
-    for (const Triangle& t : p.mesh.faces)
-      for (Index v : t)
-        if (v >= p.mesh.vertices.size()) throw std::invalid_argument("read_pieces: a face with no such vertex");
+    get_piece_numbers(in, p);
     pieces.push_back(std::move(p));
   }
   return pieces;

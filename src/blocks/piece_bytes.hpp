@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "blocks/byte_stream.hpp"
 #include "blocks/seam.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh.hpp"
@@ -28,6 +29,32 @@ struct PieceMessage {
   CleanupStats cleanup;   // its cleanup's counts
   double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
 };
+
+// A mesh's vertices, faces and atom tags; get_mesh throws std::invalid_argument for a face
+// with no such vertex or a tag count that is not the face count.
+void put_mesh(std::string& out, const Mesh& mesh);
+Mesh get_mesh(ByteReader& in);
+
+// What every piece carries after its meshes, glued or streamed: its counts, its quality
+// before cleanup, its cleanup's counts and its times.
+template <class Piece>
+void put_piece_numbers(std::string& out, const Piece& p) {
+  put(out, p.stats);
+  put(out, p.before);
+  put(out, p.cleanup);
+  put(out, p.seconds_union);
+  put(out, p.seconds_cleanup);
+  put(out, p.seconds_check);
+}
+template <class Piece>
+void get_piece_numbers(ByteReader& in, Piece& p) {
+  p.stats = in.get<BlockStats>();
+  p.before = in.get<Quality>();
+  p.cleanup = in.get<CleanupStats>();
+  p.seconds_union = in.get<double>();
+  p.seconds_cleanup = in.get<double>();
+  p.seconds_check = in.get<double>();
+}
 
 // Appends `piece` to `out`.
 void append_piece(std::string& out, const PieceMessage& piece);

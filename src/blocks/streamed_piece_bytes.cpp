@@ -2,32 +2,10 @@
 // that made the piece to the one that joins the seams.
 #include <stdexcept>
 
-#include "blocks/byte_stream.hpp"
+#include "blocks/piece_bytes.hpp"
 #include "blocks/streamed_piece.hpp"
 
 namespace molsurf::blocks {
-
-namespace {
-
-void put_mesh(std::string& out, const Mesh& mesh) {
-  put_array(out, mesh.vertices);
-  put_array(out, mesh.faces);
-  put_array(out, mesh.face_tags);
-}
-
-Mesh get_mesh(ByteReader& in) {
-  Mesh mesh;
-  mesh.vertices = in.get_array<Vec3>();
-  mesh.faces = in.get_array<Triangle>();
-  mesh.face_tags = in.get_array<std::int32_t>();
-  if (mesh.face_tags.size() != mesh.faces.size()) throw std::invalid_argument("piece bytes: one tag per face");
-  for (const Triangle& t : mesh.faces)
-    for (Index v : t)
-      if (v >= mesh.vertices.size()) throw std::invalid_argument("piece bytes: a face with no such vertex");
-  return mesh;
-}
-
-}  // namespace
 
 void append_streamed_piece(std::string& out, const StreamedPiece& p) {
   put(out, static_cast<std::uint64_t>(p.block));
@@ -50,12 +28,7 @@ void append_streamed_piece(std::string& out, const StreamedPiece& p) {
     put_array(out, part.atoms);
     put_array(out, part.joints);
   }
-  put(out, p.stats);
-  put(out, p.before);
-  put(out, p.cleanup);
-  put(out, p.seconds_union);
-  put(out, p.seconds_cleanup);
-  put(out, p.seconds_check);
+  put_piece_numbers(out, p);
 }
 
 std::vector<StreamedPiece> read_streamed_pieces(std::string_view bytes) {
@@ -85,12 +58,7 @@ std::vector<StreamedPiece> read_streamed_pieces(std::string_view bytes) {
       part.joints = in.get_array<Vec3>();
       p.parts.push_back(std::move(part));
     }
-    p.stats = in.get<BlockStats>();
-    p.before = in.get<Quality>();
-    p.cleanup = in.get<CleanupStats>();
-    p.seconds_union = in.get<double>();
-    p.seconds_cleanup = in.get<double>();
-    p.seconds_check = in.get<double>();
+    get_piece_numbers(in, p);
     pieces.push_back(std::move(p));
   }
   return pieces;
