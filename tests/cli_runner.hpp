@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace molsurf::testing {
 
@@ -22,6 +23,14 @@ inline std::string read_text(const std::filesystem::path& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// The lines of `text`, without their newlines.
+inline std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
 }
 
 // `arguments` is appended to the executable's path as is (quote paths yourself);

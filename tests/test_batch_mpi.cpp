@@ -17,18 +17,13 @@
 namespace molsurf {
 namespace {
 
+using testing::lines;
 using testing::read_text;
 using testing::run_molsurf;
 using testing::TempDir;
 
 const std::string kData = MOLSURF_DATA_DIR;
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 
 // The summary's rows with the seconds column (the sixth) left out.
 std::vector<std::vector<std::string>> rows_but_seconds(const std::filesystem::path& csv) {

@@ -15,18 +15,13 @@ namespace molsurf {
 namespace {
 
 using testing::json_number;
+using testing::lines;
 using testing::read_text;
 using testing::run_molsurf;
 using testing::TempDir;
 
 const std::string kData = MOLSURF_DATA_DIR;
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 
 // A folder with two structures, one in a subfolder, a broken one, and a file that is no
 // structure; the same name twice.
