@@ -8,15 +8,7 @@ structure="$1"
 molsurf="${2:-build/release/molsurf}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-run() {  # label, then the command; one line per process
-  local label="$1"; shift
-  (cd "$work" && "$@" > /dev/null 2> time.txt) || { cat "$work/time.txt"; exit 1; }
-  awk -v label="$label" '
-    /User time/ { cpu = $NF }
-    /System time/ { cpu += $NF }
-    /Elapsed \(wall clock\)/ { n = split($NF, t, ":"); s = (n == 3) ? t[1] * 3600 + t[2] * 60 + t[3] : t[1] * 60 + t[2] }
-    /Maximum resident set size/ { printf "%-22s wall %7.1f s  cpu %7.1f s  peak %7.0f MB\n", label, s, cpu, $NF / 1024 }' "$work/time.txt"
-}
+source "$(dirname "$0")/time_per_process.sh"
 abs="$(realpath "$structure")"
 bin="$(realpath "$molsurf")"
 run "one process" /usr/bin/time -v "$bin" "$abs" -o one.vtp -q

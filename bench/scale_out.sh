@@ -11,15 +11,7 @@ molsurf="${2:-build/release/molsurf}"
 runs="${3:-one blocks4 np2 np4}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-run() {  # label, then the command; prints wall and processor seconds and peak RSS of each process
-  local label="$1"; shift
-  (cd "$work" && "$@" > /dev/null 2> time.txt) || { cat "$work/time.txt"; exit 1; }
-  awk -v label="$label" '
-    /User time/ { cpu = $NF }
-    /System time/ { cpu += $NF }
-    /Elapsed \(wall clock\)/ { n = split($NF, t, ":"); s = (n == 3) ? t[1] * 3600 + t[2] * 60 + t[3] : t[1] * 60 + t[2] }
-    /Maximum resident set size/ { printf "%-28s wall %7.1f s  cpu %7.1f s  peak %7.0f MB\n", label, s, cpu, $NF / 1024 }' "$work/time.txt"
-}
+source "$(dirname "$0")/time_per_process.sh"
 abs="$(realpath "$structure")"
 bin="$(realpath "$molsurf")"
 checked() {  # the surface of an index, valid by molsurf check
