@@ -1116,6 +1116,7 @@ PYBIND11_MODULE(molsurf, m) {
                                                    *d.computed.ses_arrangement);
             }
             const std::vector<molsurf::PatchType> face_types = molsurf::face_patch_types(mesh, labels);
+            const std::vector<std::uint32_t> face_numbers = molsurf::face_patch_numbers(mesh, labels);
             const auto n = static_cast<py::ssize_t>(labels.size());
             py::array_t<std::uint8_t> type(n);
             py::array_t<std::int64_t> atom(n);
@@ -1132,15 +1133,22 @@ PYBIND11_MODULE(molsurf, m) {
               u(v, 2) = l.normal.z;
             }
             py::array_t<std::uint8_t> face_type(static_cast<py::ssize_t>(face_types.size()));
+            py::array_t<std::int64_t> face_number(static_cast<py::ssize_t>(face_types.size()));
             auto f = face_type.mutable_unchecked<1>();
-            for (py::ssize_t k = 0; k < f.shape(0); ++k) f(k) = static_cast<std::uint8_t>(face_types[static_cast<std::size_t>(k)]);
+            auto g = face_number.mutable_unchecked<1>();
+            for (py::ssize_t k = 0; k < f.shape(0); ++k) {
+              f(k) = static_cast<std::uint8_t>(face_types[static_cast<std::size_t>(k)]);
+              g(k) = face_numbers[static_cast<std::size_t>(k)];
+            }
             return py::dict("vertex_type"_a = type, "vertex_atom"_a = atom, "vertex_normal"_a = normal,
-                            "face_type"_a = face_type);
+                            "face_type"_a = face_type, "face_number"_a = face_number);
           },
           "The SES's MSMS patch labels (what its .vert/.face files carry), as NumPy arrays in a dict:\n"
           "vertex_type (V,) uint8 and face_type (F,) uint8, MSMS's numbers (1 toroidal, 2 reentrant,\n"
           "3 contact); vertex_atom (V,) int64, the closest atom (0-based); vertex_normal (V, 3), the\n"
-          "analytic outward normal. Raises molsurf.Error for the SAS and vdW surfaces.")
+          "analytic outward normal; face_number (F,) int64, the analytical face (0-based: atoms'\n"
+          "contact patches first, then the tori of atom pairs, then the probe positions; the .face\n"
+          "file's last column is this + 1). Raises molsurf.Error for the SAS and vdW surfaces.")
       .def_property_readonly(
           "mesh",
           [](const PySurface& s) {

@@ -3,6 +3,7 @@
 // carry them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -120,6 +121,11 @@ TEST(PatchTypes, TwoAtomsHaveContactPatchesAndAToroidalBandWhereTheGeometrySays)
   EXPECT_EQ(count[2], 0u);  // two atoms have no reentrant patch
   expect_normals_fit_the_faces(s.mesh, labels);
 
+  // Three analytical faces: the two contact patches (numbered by their atoms) and one torus.
+  ASSERT_EQ(ses_face_count(atoms.size(), *s.ses_arrangement), 3u);
+  for (const VertexPatch& label : labels)
+    EXPECT_EQ(label.face, label.type == PatchType::contact ? label.atom : 2u);
+
   // The contact area and the saddle's against the closed forms (ses_reference::two_atoms' first
   // terms are the two caps); faces along a seam go to one side or the other, so a few percent.
   const std::array<double, 4> area = area_by_type(s.mesh, face_patch_types(s.mesh, labels));
@@ -154,6 +160,29 @@ TEST(PatchTypes, ATriangleOfAtomsHasReentrantPatchesOnTheProbesThatRestOnAllThre
   EXPECT_GT(count[2], 0u);
   EXPECT_GT(count[3], 0u);
   expect_normals_fit_the_faces(s.mesh, labels);
+
+  // Analytical faces: three contact patches, three tori (one per pair), and a probe position
+  // per arrangement vertex: the probes above and below the triangle's plane number their
+  // reentrant faces apart, each side with one number.
+  const std::size_t vertices = s.ses_arrangement->vertices.size();
+  ASSERT_EQ(ses_face_count(atoms.size(), *s.ses_arrangement), 6 + vertices);
+  std::array<std::vector<std::uint32_t>, 2> reentrant;  // below, above
+  std::vector<std::uint32_t> toroidal;
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    const VertexPatch& label = labels[v];
+    if (label.type == PatchType::contact) EXPECT_EQ(label.face, label.atom);
+    if (label.type == PatchType::toroidal) toroidal.push_back(label.face);
+    if (label.type == PatchType::reentrant) reentrant[s.mesh.vertices[v].z > 0].push_back(label.face);
+  }
+  for (std::vector<std::uint32_t>* faces : {&toroidal, &reentrant[0], &reentrant[1]}) {
+    std::sort(faces->begin(), faces->end());
+    faces->erase(std::unique(faces->begin(), faces->end()), faces->end());
+  }
+  EXPECT_EQ(toroidal, (std::vector<std::uint32_t>{3, 4, 5}));
+  ASSERT_EQ(reentrant[0].size(), 1u);
+  ASSERT_EQ(reentrant[1].size(), 1u);
+  EXPECT_NE(reentrant[0][0], reentrant[1][0]);
+  for (const auto& side : reentrant) EXPECT_TRUE(side[0] >= 6 && side[0] < 6 + vertices) << side[0];
 }
 
 // Crambin's SES, made once for the tests that read it.
@@ -246,6 +275,40 @@ TEST(PatchTypes, CrambinFilesCarryTheTypesTheNormalsAndTheClosestAtoms) {
     ASSERT_EQ(vert[v][8], static_cast<double>(labels[v].type));
   }
   for (std::size_t f = 0; f < face.size(); ++f) ASSERT_EQ(face[f][3], static_cast<double>(types[f]));
+
+  // The analytical face numbers: each face's is one its corners of its type are labelled with,
+  // within that type's range; a vertex's is the one the faces around it share (else <= 0).
+  const std::size_t contacts = atoms_->size();
+  const std::size_t faces = ses_face_count(contacts, *s.ses_arrangement);
+  const std::size_t probes = s.ses_arrangement->vertices.size();
+  const std::vector<std::uint32_t> numbers = face_patch_numbers(s.mesh, labels);
+  std::vector<std::vector<std::uint32_t>> around(s.mesh.vertex_count());
+  for (std::size_t f = 0; f < face.size(); ++f) {
+    ASSERT_EQ(face[f][4], numbers[f] + 1.0);
+    const std::uint32_t n = numbers[f];
+    const bool in_range = types[f] == PatchType::contact     ? n < contacts
+                          : types[f] == PatchType::reentrant ? n >= faces - probes && n < faces
+                                                             : n >= contacts && n < faces - probes;
+    ASSERT_TRUE(in_range) << "face " << f << " type " << static_cast<int>(types[f]) << " number " << n;
+    bool labelled = false;
+    for (Index v : s.mesh.faces[f]) {
+      labelled = labelled || (labels[v].type == types[f] && labels[v].face == n);
+      around[v].push_back(n);
+    }
+    ASSERT_TRUE(labelled) << "face " << f;
+  }
+  std::size_t inside = 0;
+  for (std::size_t v = 0; v < vert.size(); ++v) {
+    const bool one = std::all_of(around[v].begin(), around[v].end(), [&](std::uint32_t n) { return n == around[v][0]; });
+    ASSERT_EQ(vert[v][6] > 0, one) << "vertex " << v;
+    if (one) {
+      ASSERT_EQ(vert[v][6], around[v][0] + 1.0);
+      ++inside;
+    }
+  }
+  // 45 % of crambin's vertices lie inside one analytical face; the rest are on the seams
+  // between them, which the narrow saddles and probe caps are mostly made of.
+  EXPECT_GT(inside, vert.size() / 3);
   std::filesystem::remove_all(dir);
 }
 

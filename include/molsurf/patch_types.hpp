@@ -15,6 +15,7 @@
 // This is a labelling of a rounded mesh for its readers, not a decision the surface depends
 // on: candidates are compared by floating-point distance, ties going to the family listed
 // first (contact, toroidal, reentrant) and then to the lower atom or vertex index.
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -34,7 +35,16 @@ struct VertexPatch {
   PatchType type = PatchType::contact;
   std::uint32_t atom = 0;  // the contact patch's atom; else the nearest (by |p - c| - r) atom the probe touches
   Vec3 normal;             // analytic, unit, outward (pointing from the solid to the probe)
+  // The analytical face (0-based), numbered as ses_face_count explains: the contact patch's
+  // atom, the torus of the two atoms the probe rolls on, or the probe position on three.
+  std::uint32_t face = 0;
 };
+
+// The SES's analytical faces are numbered contact first (face i: atom i's contact patch), then
+// one toroidal face per pair of atoms whose spheres share an exposed arc (the torus their probe
+// sweeps, pairs in increasing order), then one reentrant face per vertex of the arrangement
+// (the probe resting there). The count of all three.
+std::size_t ses_face_count(std::size_t atoms, const SphereArrangement& arrangement);
 
 // One label per point (the SES mesh's vertices). `arrangement` is that of the atoms' r + probe
 // spheres (compute_areas with the same probe), `probe` > 0. Points far from every atom get
@@ -45,5 +55,9 @@ std::vector<VertexPatch> ses_vertex_patches(std::span<const Vec3> points, std::s
 // A face's type: the type its three vertices share, else the type two of them share, else
 // (three different types) toroidal, the patch that lies between contact and reentrant ones.
 std::vector<PatchType> face_patch_types(const Mesh& mesh, std::span<const VertexPatch> vertices);
+
+// A face's analytical face: of its corners of the face's type (face_patch_types), the face
+// two of them share, else the lowest.
+std::vector<std::uint32_t> face_patch_numbers(const Mesh& mesh, std::span<const VertexPatch> vertices);
 
 }  // namespace molsurf

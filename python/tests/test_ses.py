@@ -54,6 +54,11 @@ def test_ses_patches_are_msms_types_with_unit_normals_and_its_files_carry_them(t
     assert np.array_equal(vert[:, 8].astype(int), p["vertex_type"])
     assert np.array_equal(vert[:, 7].astype(int), p["vertex_atom"] + 1)
     assert np.array_equal(face[:, 3], p["face_type"])
+    assert np.array_equal(face[:, 4], p["face_number"] + 1)
+    # Analytical faces: contact patches 0-2 (their atoms), tori 3-5, then the probe positions.
+    assert np.array_equal(np.unique(p["face_number"][p["face_type"] == 3]), [0, 1, 2])
+    assert np.array_equal(np.unique(p["face_number"][p["face_type"] == 1]), [3, 4, 5])
+    assert len(np.unique(p["face_number"][p["face_type"] == 2])) == 2  # the probes above and below
     assert np.abs(vert[:, 3:6] - p["vertex_normal"]).max() <= 5e-4 + 1e-12
     with pytest.raises(molsurf.Error, match="solvent-excluded"):
         molsurf.surface(centres=centres, radii=radii).patches()

@@ -16,7 +16,9 @@
 // The solvent-excluded surface (MeshWriteOptions::ses_arrangement given) has MSMS's three
 // kinds of patch: each vertex gets its patch type, closest atom and analytic normal from the
 // probe position nearest it (patch_types.hpp), each face the type its vertices share (else
-// by majority, else toroidal); the analytical face numbers follow the face tags as below.
+// by majority, else toroidal) and its analytical face: the contact patch of an atom, the torus
+// of a pair of atoms or a probe position (ses_face_count's numbering, + 1), vertices numbered
+// from the faces around them as below.
 //
 // What MSMS's columns mean for a union of atom spheres (MSMS manual, docs/formats.md):
 //  - every triangle lies on an atom's sphere, which MSMS calls a contact face: type 3
@@ -111,13 +113,18 @@ struct VertexPatches {
 };
 
 // Per vertex, in one pass over the faces and a few bytes per vertex (no sort: a capsid's
-// hundreds of millions of corners stay cheap).
-std::vector<VertexPatches> vertex_patches(const Mesh& mesh) {
+// hundreds of millions of corners stay cheap). `face_patch` gives each face's patch (0-based;
+// negative: none).
+template <typename FacePatch>
+std::vector<VertexPatches> vertex_patches(const Mesh& mesh, FacePatch face_patch) {
   std::vector<VertexPatches> patches(mesh.vertex_count());
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
-    if (const std::int32_t tag = mesh.tag(f); tag >= 0)
-      for (Index v : mesh.faces[f]) patches[v].add(tag);
+    if (const std::int32_t patch = face_patch(f); patch >= 0)
+      for (Index v : mesh.faces[f]) patches[v].add(patch);
   return patches;
+}
+std::vector<VertexPatches> vertex_patches(const Mesh& mesh) {
+  return vertex_patches(mesh, [&](std::size_t f) { return mesh.tag(f); });
 }
 
 // MSMS's analytical face number of each vertex (see the file comment).
@@ -288,9 +295,17 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
   const std::vector<Vec3> normals = ses                             ? oriented_normals(mesh, ses_patches)
                                     : options.faces_on_atom_spheres ? msms_normals(mesh, options.atoms, patches)
                                                                     : vertex_normals(mesh);
-  const std::vector<long long> analytical = analytical_numbers(patches);
   std::vector<long long> closest = closest_spheres(mesh, options.atoms);
   std::vector<int> vertex_type(mesh.vertex_count(), kContactType), face_type(mesh.face_count(), kContactType);
+  std::vector<long long> face_number(mesh.face_count());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) face_number[f] = std::max(mesh.tag(f), kNoTag) + 1LL;
+  if (ses) {
+    const std::vector<std::uint32_t> numbers = face_patch_numbers(mesh, ses_patches);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) face_number[f] = numbers[f] + 1LL;
+  }
+  const std::vector<long long> analytical =
+      analytical_numbers(ses ? vertex_patches(mesh, [&](std::size_t f) { return static_cast<std::int32_t>(face_number[f] - 1); })
+                             : patches);
   if (ses) {
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
       closest[v] = ses_patches[v].atom + 1LL;
@@ -329,8 +344,7 @@ void write_msms(AtomicFileSet& files, const path& file, const Mesh& mesh, const 
   if (options.msms_header) append_msms_header(face, "faces", "#faces ", mesh.face_count(), spheres, options);
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const Triangle& t = mesh.faces[f];
-    append_formatted(face, "%6u %6u %6u %2d %6d\n", t[0] + 1, t[1] + 1, t[2] + 1, face_type[f],
-                     std::max(mesh.tag(f), kNoTag) + 1);
+    append_formatted(face, "%6u %6u %6u %2d %6lld\n", t[0] + 1, t[1] + 1, t[2] + 1, face_type[f], face_number[f]);
   }
 
   // Both go into the caller's set: both are complete before either replaces an old one.
