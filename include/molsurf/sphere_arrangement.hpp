@@ -43,7 +43,8 @@ struct ArrangementArc {
   std::uint32_t sphere = 0, other = 0;
   std::int64_t from = -1, to = -1;  // vertex indices; -1 for a whole circle
   // Radians swept about the circle's axis, in (0, 2 pi]; 0 only for an arc joining two
-  // vertices at one point where four or more spheres meet.
+  // vertices at one point where four or more spheres meet, or within rounding of one (a
+  // symmetric placement with rounded coordinates).
   double angle = 0;
   std::uint32_t patch = 0;          // index into SphereArrangement::patches
 };

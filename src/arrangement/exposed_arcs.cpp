@@ -157,10 +157,37 @@ void SphereArranger::exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<co
   if (exposed.empty()) return;  // the whole circle is covered by the union of the crossing caps
   // Counter-clockwise, exposed arcs run from a leaving end (s = +1) to the next entering
   // one; at equal angles the leaving end first (the point alone is exposed).
-  std::sort(exposed.begin(), exposed.end(), [](const Exposed& a, const Exposed& b) {
+  const auto by_angle = [](const Exposed& a, const Exposed& b) {
     if (a.theta != b.theta) return a.theta < b.theta;
     return a.s != b.s ? a.s > b.s : a.end < b.end;
-  });
+  };
+  std::sort(exposed.begin(), exposed.end(), by_angle);
+  // Exposed ends closer than their angles' rounding are one point too. Where several spheres
+  // nearly meet at one point (a symmetric placement whose coordinates were rounded), their
+  // exact order along the circle is below the angles' resolution; the exact tests still say
+  // which are exposed, and an exposed end sits outside every other cap, so each cap open
+  // across the point has ended at an exposed leaving end before an exposed entering one
+  // begins: leaving first, as at a point found exactly (a rounded order that put an entering
+  // end first ran the exposed arc from the leaving end all the way round to the next point).
+  const auto close = [&](const Exposed& a, const Exposed& b, double turn) {
+    return std::fabs(b.theta + turn - a.theta) <= ends[a.end].margin + ends[b.end].margin;
+  };
+  bool merged = false;
+  for (std::size_t k = 1; k < exposed.size(); ++k)
+    if (exposed[k].theta != exposed[k - 1].theta && close(exposed[k - 1], exposed[k], 0)) {
+      exposed[k].theta = exposed[k - 1].theta;
+      merged = true;
+    }
+  // Across the start of the angles: the last ends join the first point.
+  for (std::size_t k = exposed.size(); k-- > 1 && exposed[k].theta != exposed[0].theta &&
+                                       close(exposed[k], exposed[0], kTurn);) {
+    exposed[k].theta = exposed[0].theta;
+    merged = true;
+  }
+  if (merged) {
+    for (const Exposed& e : exposed) theta[e.end] = e.theta;
+    std::sort(exposed.begin(), exposed.end(), by_angle);
+  }
   // Ends of one kind at one point (several caps entered, or left, together) make one end.
   std::size_t kept = 0;
   for (std::size_t k = 0; k < exposed.size(); ++k) {
