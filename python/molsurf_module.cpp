@@ -1095,6 +1095,19 @@ PYBIND11_MODULE(molsurf, m) {
           "(F,) int32: the index (into structure's atoms) of the atom whose sphere each face lies on:\n"
           "read-only view.")
       .def_property_readonly(
+          "ses_patches",
+          [](const PySurface& s) -> py::object {
+            const auto& m = s.data->computed.ses_patches;
+            if (!m) return py::none();
+            return py::dict("area"_a = m->area, "volume"_a = m->volume, "contact_area"_a = m->contact_area,
+                            "toroidal_area"_a = m->toroidal_area, "reentrant_area"_a = m->reentrant_area,
+                            "atom_area"_a = py::array_t<double>(static_cast<py::ssize_t>(m->area_per_atom.size()),
+                                                                 m->area_per_atom.data()));
+          },
+          "The SES only (surface='ses'): its area and volume from the arrangement's patches, beside\n"
+          "the facets' (area, volume): a dict with area, volume, contact_area, toroidal_area,\n"
+          "reentrant_area and atom_area (N,) per atom; None for the SAS and vdW surfaces.")
+      .def_property_readonly(
           "stern",
           [](const PySurface& s) -> py::object {
             if (!s.data->stern) return py::none();

@@ -25,6 +25,7 @@
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/resource_limits.hpp"
+#include "molsurf/ses_measures.hpp"
 #include "molsurf/sphere_arrangement.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_report.hpp"
@@ -59,8 +60,8 @@ struct ComputeSurfaceOptions {
   // manifold, oriented, outward and non-degenerate are still required.
   bool check_self_intersections = true;
   // Also the exact arrangement of the true spheres (compute_areas.hpp): exact areas and
-  // volumes per atom, shell and in total, beside the facets' own. The SAS and vdW surfaces
-  // only: the SES's own exact values are `ses_reference`.
+  // volumes per atom, shell and in total, beside the facets' own. For the SES: its area and
+  // volume from the arrangement's patches instead (ComputedSurface::ses_patches).
   bool exact_areas = true;
   // After cleanup, move the vertices onto the true spheres, circles and triple points where
   // validity allows (true_points.hpp).
@@ -133,6 +134,9 @@ struct ComputedSurface {
   // spheres it was built from, where the probe's centre rolls. Its files' MSMS patch types,
   // closest atoms and normals come from it (patch_types.hpp).
   std::shared_ptr<const SphereArrangement> ses_arrangement;
+  // The solvent-excluded surface with exact_areas: its area and volume from the arrangement's
+  // patches (ses_measures.hpp), with outer_only as the mesh. Absent otherwise.
+  std::optional<SesMeasures> ses_patches;
   // With ComputeSurfaceOptions::stern_probe: the Stern layer, computed as the SAS at that probe
   // is (its own checked mesh, measures and exact arrangement). Null otherwise.
   std::shared_ptr<const ComputedSurface> stern;

@@ -17,6 +17,7 @@
 #include "molsurf/mesh.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/relative_area.hpp"
+#include "molsurf/ses_measures.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/sphere_arrangement.hpp"
 #include "molsurf/surface_measures.hpp"
@@ -110,6 +111,9 @@ struct SurfaceReport {
   std::vector<double> atom_area;
   std::vector<ModelReport> models;  // --all-models: every model's numbers (the rest is the first's)
   std::optional<SternReport> stern;  // --stern
+  // The SES: its area and volume from the arrangement's patches (ses_measures.hpp), beside
+  // the facets' area and volume above.
+  std::optional<SesMeasures> ses_patches;
 };
 
 SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check);

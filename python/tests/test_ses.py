@@ -64,6 +64,22 @@ def test_ses_patches_are_msms_types_with_unit_normals_and_its_files_carry_them(t
         molsurf.surface(centres=centres, radii=radii).patches()
 
 
+def test_ses_patches_give_its_area_and_volume_beside_the_facets():
+    centres = np.array([[0.0, 0.0, 0.0], [3.6, 0.0, 0.0], [1.8, 3.6 * math.sqrt(3) / 2, 0.0]])
+    radii = np.array([1.6, 1.6, 1.6])
+    s = molsurf.surface(centres=centres, radii=radii, surface="ses")
+    m = s.ses_patches
+    assert m["area"] == pytest.approx(m["contact_area"] + m["toroidal_area"] + m["reentrant_area"], rel=1e-12)
+    assert m["atom_area"].sum() == pytest.approx(m["area"], rel=1e-9)
+    # Three equal atoms: equal shares, up to where the cells fall on the borders between
+    # atoms' shares of a saddle or probe cap (cells are halved where the SES ends, not there).
+    assert np.allclose(m["atom_area"], m["atom_area"][0], rtol=3e-3)
+    # The facets at density 2 within half a percent of the patches.
+    assert s.area == pytest.approx(m["area"], rel=5e-3)
+    assert s.volume == pytest.approx(m["volume"], rel=5e-3)
+    assert molsurf.surface(centres=centres, radii=radii).ses_patches is None
+
+
 def test_stern_layer_is_the_sas_at_its_probe_from_the_same_call(tmp_path):
     centres = np.array([[0.0, 0.0, 0.0], [3.5, 0.0, 0.0], [1.7, 2.9, 0.0]])
     radii = np.array([1.7, 1.5, 1.6])

@@ -294,6 +294,7 @@ int SurfaceCommand::run() const {
   else
     add_surface_files(*this, out, surface, written, surface_check_options(computed, threads), inputs, outputs, files);
   if (computed.stern) report.stern = add_stern_file(*this, *computed.stern, s.atoms, files);
+  report.ses_patches = computed.ses_patches;
   const std::optional<VolumeMeshReport> volume = add_volume_mesh(*this, surface, text, files);
   if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
   add_area_tables(*this, s.atoms, atom_area, report, files);

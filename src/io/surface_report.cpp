@@ -203,6 +203,11 @@ std::string format_surface_report(const SurfaceReport& r) {
     row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
   }
   if (r.exact) format_shells(r, row);
+  if (r.ses_patches)
+    row("from its patches", fixed(r.ses_patches->area, 2) + " A^2 (contact " + fixed(r.ses_patches->contact_area, 2) +
+                                ", toroidal " + fixed(r.ses_patches->toroidal_area, 2) + ", reentrant " +
+                                fixed(r.ses_patches->reentrant_area, 2) + "), " + fixed(r.ses_patches->volume, 2) +
+                                " A^3 (the SES of the true spheres, docs/ses.md)");
   if (r.stern)
     row("stern layer", r.stern->output.string() + " (solvent-accessible at probe " + fixed(r.stern->probe, 2) +
                            " A, " + std::to_string(r.stern->faces) + " faces): area " + fixed(r.stern->area, 2) +
@@ -354,6 +359,12 @@ std::string surface_report_json(const SurfaceReport& r) {
   j.field("faces", r.faces).field("vertices", r.vertices);
   if (!r.exact) j.field("area", r.area).field("volume", r.volume);
   j.field("facet_area", r.area).field("facet_volume", r.volume);
+  if (r.ses_patches) {
+    const SesMeasures& m = *r.ses_patches;
+    j.key("ses_patches").begin_object().field("area", m.area).field("volume", m.volume);
+    j.field("contact_area", m.contact_area).field("toroidal_area", m.toroidal_area);
+    j.field("reentrant_area", m.reentrant_area).end_object();
+  }
   if (r.stern) {
     const SternReport& s = *r.stern;
     j.key("stern").begin_object().field("output", s.output.string()).field("probe", s.probe).field("faces", s.faces);

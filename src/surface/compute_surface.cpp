@@ -236,6 +236,8 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   pipeline.report(SurfaceStage::measures, 0, 1);
   const bool exact = options.exact_areas && options.surface == SurfaceKind::sas;
   if (exact) result.exact = compute_areas(atoms, options.spheres).arrangement;
+  if (options.exact_areas && options.surface == SurfaceKind::ses && attempt.ses_arrangement)
+    result.ses_patches = measure_ses(atoms, options.spheres.probe, *attempt.ses_arrangement, options.outer_only);
   throw_if_cancelled(options.cancel);
   result.measures = measure_surface(attempt.mesh, attempt.check, atoms.size(), exact ? &result.exact : nullptr,
                                     &result.component_shells);
