@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "arrangement/arrangement_part.hpp"
 #include "blocks/piece_bytes.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
@@ -59,6 +60,9 @@ struct StreamedPiece {
   Quality quality;
   std::vector<AtomArea> atom_area;
   std::vector<WrittenPart> parts;
+  // The block's exact areas (with exact_areas; empty otherwise) and their time.
+  arrangement::ArrangementPart exact;
+  double seconds_exact = 0;
   // The piece's own job.
   BlockStats stats;
   Quality before;
