@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "arrangement/joined_parts.hpp"
+
 namespace molsurf::blocks {
 
 arrangement::ArrangementPart block_arrangement(const BlockAtoms& block, const SphereOptions& spheres, int threads) {
@@ -14,6 +16,13 @@ arrangement::ArrangementPart block_arrangement(const BlockAtoms& block, const Sp
     radii[i] = sphere_radius(block.atoms[i], spheres);
   }
   return arrangement::arrange_part(centres, radii, block.contained, block.in_block, block.global_index, threads);
+}
+
+SphereArrangement joined_block_areas(std::span<const Atom> atoms, const SphereOptions& spheres,
+                                     std::span<const arrangement::ArrangementPart> parts) {
+  return arrangement::join_parts(parts, atoms.size(), [&](std::uint32_t i) {
+    return arrangement::Ball{atoms[i].centre, sphere_radius(atoms[i], spheres)};
+  });
 }
 
 void put_arrangement_part(std::string& out, const arrangement::ArrangementPart& part) {

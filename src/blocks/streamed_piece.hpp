@@ -14,7 +14,6 @@
 #include <string_view>
 #include <vector>
 
-#include "arrangement/arrangement_part.hpp"
 #include "blocks/piece_bytes.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
@@ -60,14 +59,13 @@ struct StreamedPiece {
   Quality quality;
   std::vector<AtomArea> atom_area;
   std::vector<WrittenPart> parts;
-  // The block's exact areas (with exact_areas; empty otherwise) and their time.
-  arrangement::ArrangementPart exact;
-  double seconds_exact = 0;
-  // The piece's own job.
+  // The piece's own job, and its block's exact areas (with exact_areas; empty otherwise).
   BlockStats stats;
   Quality before;
   CleanupStats cleanup;
   double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
+  arrangement::ArrangementPart exact;
+  double seconds_exact = 0;
 };
 
 struct SplitPiece {

@@ -2,7 +2,6 @@
 // that made the piece to the one that joins the seams.
 #include <stdexcept>
 
-#include "blocks/block_areas.hpp"
 #include "blocks/piece_bytes.hpp"
 #include "blocks/streamed_piece.hpp"
 
@@ -29,8 +28,6 @@ void append_streamed_piece(std::string& out, const StreamedPiece& p) {
     put_array(out, part.atoms);
     put_array(out, part.joints);
   }
-  put_arrangement_part(out, p.exact);
-  put(out, p.seconds_exact);
   put_piece_numbers(out, p);
 }
 
@@ -61,8 +58,6 @@ std::vector<StreamedPiece> read_streamed_pieces(std::string_view bytes) {
       part.joints = in.get_array<Vec3>();
       p.parts.push_back(std::move(part));
     }
-    p.exact = get_arrangement_part(in);
-    p.seconds_exact = in.get<double>();
     get_piece_numbers(in, p);
     pieces.push_back(std::move(p));
   }

@@ -11,7 +11,6 @@
 #include <unordered_map>
 #include <utility>
 
-#include "arrangement/joined_parts.hpp"
 #include "blocks/block_areas.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_job.hpp"
@@ -231,18 +230,6 @@ void merge_measures(const Mesh& seams, std::span<const StreamedPiece> pieces, st
   check.quality = m.quality;
 }
 
-// The whole structure's exact arrangement (its report's numbers) joined from the blocks'
-// parts, which are released.
-SphereArrangement joined_areas(std::span<const Atom> atoms, const SphereOptions& spheres,
-                               std::vector<StreamedPiece>& pieces) {
-  std::vector<arrangement::ArrangementPart> parts;
-  parts.reserve(pieces.size());
-  for (StreamedPiece& p : pieces) parts.push_back(std::move(p.exact));
-  return arrangement::join_parts(parts, atoms.size(), [&](std::uint32_t i) {
-    return arrangement::Ball{atoms[i].centre, sphere_radius(atoms[i], spheres)};
-  });
-}
-
 }  // namespace
 
 BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
@@ -319,7 +306,11 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
 
     clock = Clock::now();
     report(SurfaceStage::measures, 0, 1);
-    if (options.exact_areas) result.exact = joined_areas(atoms, options.spheres, pieces);
+    if (options.exact_areas) {
+      std::vector<arrangement::ArrangementPart> parts;
+      for (StreamedPiece& p : pieces) parts.push_back(std::move(p.exact));
+      result.exact = joined_block_areas(atoms, options.spheres, parts);
+    }
     merge_measures(seams, pieces, atoms.size(), origin, options.exact_areas ? &result.exact : nullptr, result);
     result.check.self_intersections_checked = options.check_self_intersections;
     result.seconds.measures = seconds_since(clock);
