@@ -83,7 +83,8 @@ void expect_same_table(const std::string& blocked, const std::string& whole, con
       if (x == y) continue;
       char *end_x = nullptr, *end_y = nullptr;
       const double u = std::strtod(x.c_str(), &end_x), v = std::strtod(y.c_str(), &end_y);
-      ASSERT_TRUE(*end_x == 0 && *end_y == 0 && !x.empty() && !y.empty()) << name << " line " << line << ": " << x << " / " << y;
+      ASSERT_TRUE(*end_x == 0 && *end_y == 0 && !x.empty() && !y.empty())
+          << name << " line " << line << ": " << x << " / " << y;
       expect_close(u, v, name + " line " + std::to_string(line));
     }
   }

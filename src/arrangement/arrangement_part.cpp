@@ -99,7 +99,9 @@ ArrangementPart arrange_part(std::span<const Vec3> centres, std::span<const doub
   // A part without patches (open keys joined by aliases alone) only links other blocks' parts.
   for (std::size_t k = 0; k < links.keys().size(); ++k) {
     const Key& key = links.keys()[k];
-    if (open(key)) part.open_keys.push_back({global_key(key), static_cast<std::uint32_t>(part_of_root(links.root(links.key_node(k))))});
+    if (!open(key)) continue;
+    const std::size_t shell = part_of_root(links.root(links.key_node(k)));
+    part.open_keys.push_back({global_key(key), static_cast<std::uint32_t>(shell)});
   }
   std::sort(part.open_keys.begin(), part.open_keys.end(),
             [](const OpenKey& x, const OpenKey& y) { return x.key < y.key; });
