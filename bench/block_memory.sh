@@ -2,7 +2,8 @@
 # Peak memory per process of the spatial blocks (docs/scale-out.md, "Memory"): one process
 # without blocks, --blocks 1, 2, 4 and 8 written as .pvtp pieces, and mpirun -np 2 and -np 4
 # (one block per process), each process under /usr/bin/time -v: wall time, processor time
-# (user + system) and peak resident memory. Usage: bench/block_memory.sh STRUCTURE [MOLSURF]
+# (user + system) and peak resident memory (under mpirun, process by process in rank order:
+# process 0 joins the seams and the exact areas). Usage: bench/block_memory.sh STRUCTURE [MOLSURF]
 set -euo pipefail
 structure="$1"
 molsurf="${2:-build/release/molsurf}"
@@ -16,5 +17,5 @@ for n in 1 2 4 8; do
   run "--blocks $n" /usr/bin/time -v "$bin" "$abs" --blocks "$n" -o blocks.pvtp -q
 done
 for n in 2 4; do
-  run "mpirun -np $n" mpirun --oversubscribe --allow-run-as-root -np "$n" /usr/bin/time -v "$bin" "$abs" -o mpi.pvtp -q
+  run "mpirun -np $n" mpirun --oversubscribe --allow-run-as-root -np "$n" "${timed_rank[@]}" "$bin" "$abs" -o mpi.pvtp -q
 done

@@ -23,7 +23,7 @@ for r in $runs; do
     blocks4) run "--blocks 4" /usr/bin/time -v "$bin" "$abs" --blocks 4 -o blocks.pvtp -q && checked blocks.pvtp ;;
     np2|np4)
       n="${r#np}"
-      run "mpirun -np $n (per process)" mpirun --oversubscribe --allow-run-as-root -np "$n" /usr/bin/time -v "$bin" "$abs" \
+      run "mpirun -np $n" mpirun --oversubscribe --allow-run-as-root -np "$n" "${timed_rank[@]}" "$bin" "$abs" \
         -o "mpi$n.pvtp" -q && checked "mpi$n.pvtp" ;;
     *) echo "unknown run '$r' (one blocks4 np2 np4)"; exit 2 ;;
   esac

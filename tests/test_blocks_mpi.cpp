@@ -1,13 +1,21 @@
 // mpirun -np 2 molsurf (docs/scale-out.md): two processes, one block each, each writing its
 // own piece and sending the first only its seam band and summary, against the same two
-// blocks made by one process (the same bytes, pieces, seams and report but its timings) and
-// against the single-process surface (the facets' area within 1e-4, the same components,
-// the exact areas equal). Skipped when molsurf was built without MPI.
+// blocks made by one process (the same bytes, pieces, seams, report and tables but the
+// report's timings) and against the single-process surface (the facets' area within 1e-4,
+// the same components). The exact report, which each block computes for its own atoms and the
+// first process joins, against one process's (and against three blocks made by one process,
+// through the same path): the same numbers to rounding, shells, cavities, lining atoms and
+// counts, and the same per-atom, per-residue and per-chain tables. Skipped when molsurf was
+// built without MPI.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 
@@ -28,21 +36,78 @@ std::size_t count_of(const std::string& text, const std::string& what) {
   return n;
 }
 
+// Exact numbers to rounding: the blocks sum them in another order, and a sphere's area may be
+// integrated from another pole (its neighbour list, from a block's power diagram, may hold a
+// sphere that covers nothing).
+void expect_close(double blocked, double whole, const std::string& what) {
+  EXPECT_NEAR(blocked, whole, 1e-10 * std::fabs(whole) + 1e-12) << what;
+}
+
+// The true spheres' report of a blocked run against one process's.
+void expect_same_exact_report(const std::string& blocked_text, const std::string& whole_text) {
+  const nlohmann::json blocked = nlohmann::json::parse(blocked_text), whole = nlohmann::json::parse(whole_text);
+  expect_close(blocked["area"], whole["area"], "area");
+  expect_close(blocked["volume"], whole["volume"], "volume");
+  EXPECT_EQ(blocked["cavities"], whole["cavities"]);
+  for (const char* count : {"vertices", "arcs", "buried_atoms", "degenerate_points"})
+    EXPECT_EQ(blocked["arrangement"][count], whole["arrangement"][count]) << count;
+  const nlohmann::json &a = blocked["shells"], &b = whole["shells"];
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t s = 0; s < b.size(); ++s) {
+    const std::string shell = "shell " + std::to_string(s);
+    EXPECT_EQ(a[s]["kind"], b[s]["kind"]) << shell;
+    EXPECT_EQ(a[s]["atoms"], b[s]["atoms"]) << shell;
+    expect_close(a[s]["area"], b[s]["area"], shell + " area");
+    expect_close(a[s]["volume"], b[s]["volume"], shell + " volume");
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[s]["centroid"][k], b[s]["centroid"][k], 1e-9) << shell;
+  }
+  // The mesh's components: as many, outer and cavities.
+  ASSERT_EQ(blocked["components"].size(), whole["components"].size());
+  for (std::size_t c = 0; c < whole["components"].size(); ++c)
+    EXPECT_EQ(blocked["components"][c]["kind"], whole["components"][c]["kind"]) << "component " << c;
+}
+
+// A CSV table against another, cell by cell: the same text, or numbers equal to rounding.
+void expect_same_table(const std::string& blocked, const std::string& whole, const std::string& name) {
+  std::istringstream a(blocked), b(whole);
+  std::string line_a, line_b;
+  std::size_t line = 0;
+  while (std::getline(b, line_b)) {
+    ++line;
+    ASSERT_TRUE(std::getline(a, line_a)) << name << ": " << line - 1 << " lines only";
+    if (line_a == line_b) continue;
+    std::istringstream cells_a(line_a), cells_b(line_b);
+    std::string x, y;
+    while (std::getline(cells_b, y, ',')) {
+      ASSERT_TRUE(std::getline(cells_a, x, ',')) << name << " line " << line;
+      if (x == y) continue;
+      char *end_x = nullptr, *end_y = nullptr;
+      const double u = std::strtod(x.c_str(), &end_x), v = std::strtod(y.c_str(), &end_y);
+      ASSERT_TRUE(*end_x == 0 && *end_y == 0 && !x.empty() && !y.empty())
+          << name << " line " << line << ": " << x << " / " << y;
+      expect_close(u, v, name + " line " + std::to_string(line));
+    }
+  }
+  EXPECT_FALSE(std::getline(a, line_a)) << name << ": more lines than " << line;
+}
+
 class TwoProcesses : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(TwoProcesses, EqualTwoBlocksAndTheSingleProcessSurface) {
 #ifndef MOLSURF_MPIRUN
   GTEST_SKIP() << "molsurf built without MPI";
 #else
-  testing::TempDir mpi, blocks, single;
+  testing::TempDir mpi, blocks, three, single;
   const std::string input = "'" + kData + "/pdb/" + GetParam() + "'";
-  const std::string outputs = " -o s.pvtp --json s.json -q";
+  const std::string reports = " --json s.json --per-atom a.csv --per-residue r.csv --per-chain c.csv -q";
+  const std::string outputs = " -o s.pvtp" + reports;
   const auto launched = testing::run_molsurf(input + outputs, mpi.path(),
                                              MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 2 ");
   ASSERT_EQ(launched.exit_code, 0) << launched.err;
   ASSERT_EQ(testing::run_molsurf(input + " --blocks 2" + outputs, blocks.path()).exit_code, 0);
-  ASSERT_EQ(testing::run_molsurf(input + " -o s.vtp --json s.json -q", single.path()).exit_code, 0);
-  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s_seams.vtp"}) {
+  ASSERT_EQ(testing::run_molsurf(input + " --blocks 3" + outputs, three.path()).exit_code, 0);
+  ASSERT_EQ(testing::run_molsurf(input + " -o s.vtp" + reports, single.path()).exit_code, 0);
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s_seams.vtp", "a.csv", "r.csv", "c.csv"}) {
     const std::string bytes = testing::read_text(mpi.path() / name);
     EXPECT_FALSE(bytes.empty()) << name;
     EXPECT_EQ(bytes, testing::read_text(blocks.path() / name)) << name;
@@ -52,9 +117,14 @@ TEST_P(TwoProcesses, EqualTwoBlocksAndTheSingleProcessSurface) {
   const std::string whole = testing::read_text(single.path() / "s.json");
   const double area = testing::json_number(whole, "facet_area");
   EXPECT_NEAR(testing::json_number(report, "facet_area"), area, 1e-4 * area);
-  EXPECT_EQ(testing::json_number(report, "area"), testing::json_number(whole, "area"));  // exact, from the spheres
   EXPECT_EQ(count_of(report, "\"kind\": \"cavity\""), count_of(whole, "\"kind\": \"cavity\""));
   EXPECT_EQ(count_of(report, "\"kind\": \"outer\""), count_of(whole, "\"kind\": \"outer\""));
+  for (const testing::TempDir* run : {&mpi, &three}) {
+    SCOPED_TRACE(run == &mpi ? "mpirun -np 2" : "--blocks 3");
+    expect_same_exact_report(testing::read_text(run->path() / "s.json"), whole);
+    for (const char* name : {"a.csv", "r.csv", "c.csv"})
+      expect_same_table(testing::read_text(run->path() / name), testing::read_text(single.path() / name), name);
+  }
 #endif
 }
 

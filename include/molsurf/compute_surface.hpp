@@ -127,6 +127,10 @@ struct ComputedSurface {
   Quality quality_after;                 // of `mesh` (equal to quality_before without cleanup)
   SurfaceMeasures measures;  // the facets'
   // The true spheres' arrangement (with exact_areas; empty otherwise): sphere i is atom i.
+  // From streamed blocks (`--blocks N -o NAME.pvtp`, mpirun) it is joined from the blocks'
+  // own arrangements and keeps only what the reports read: the per-sphere areas, the
+  // shells, the stats (with the vertex and arc counts), and one patch per sphere and shell
+  // (its area; no vector area); no vertex or arc lists.
   SphereArrangement exact;
   // The shell of `exact` each of measures.components follows (shells_of_components).
   std::vector<std::int64_t> component_shells;

@@ -69,6 +69,9 @@ struct ArrangementShell {
 
 struct ArrangementStats {
   std::size_t spheres = 0, buried = 0, duplicate = 0, circles = 0;
+  // Of the whole arrangement, also when its lists are not kept (an arrangement joined from
+  // blocks keeps only what the report reads: see compute_surface.hpp's ComputedSurface::exact).
+  std::size_t vertices = 0, arcs = 0;
   std::size_t exact_decisions = 0;     // decisions the floating-point filter left to rational arithmetic
   std::size_t degenerate_points = 0;   // vertices on a fourth sphere (four or more spheres through a point)
 };

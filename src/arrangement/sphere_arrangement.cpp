@@ -20,7 +20,9 @@
 #include <string>
 
 #include "arrangement/contained_spheres.hpp"
+#include "arrangement/patch_links.hpp"
 #include "arrangement/power_neighbours.hpp"
+#include "arrangement/shell_moments.hpp"
 #include "arrangement/sphere_arranger.hpp"
 #include "common/parallel_exceptions.hpp"
 #include "common/thread_count_scope.hpp"
@@ -28,12 +30,40 @@
 namespace molsurf {
 
 using arrangement::Key;
-using arrangement::kPi;
 using arrangement::kWholeCircle;
 using arrangement::LocalArc;
 using arrangement::LocalPatch;
 using arrangement::SphereArranger;
 using arrangement::SphereResult;
+
+namespace arrangement {
+
+std::vector<SphereResult> arrange_each_sphere(std::span<const Vec3> centres, std::span<const double> radii,
+                                              std::span<const char> held, std::span<const char> copy,
+                                              std::span<const char> arrange) {
+  const std::size_t n = centres.size();
+  std::vector<char> include(n);
+  for (std::size_t i = 0; i < n; ++i) include[i] = radii[i] > 0 && !held[i];
+  const PowerNeighbours neighbours = power_neighbours(centres, radii, include);
+  const SphereArranger arranger(centres, radii, neighbours);
+  std::vector<SphereResult> spheres(n);
+  ParallelExceptions errors;
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+    errors.run(i, [&] {
+      if (!arrange[i]) return;
+      if (held[i]) {
+        spheres[i].buried = true;
+        spheres[i].duplicate = copy[i];
+        return;
+      }
+      spheres[i] = arranger.arrange(static_cast<std::uint32_t>(i));
+    });
+  errors.rethrow();
+  return spheres;
+}
+
+}  // namespace arrangement
 
 SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const double> radii,
                                   const ArrangementOptions& options) {
@@ -62,23 +92,8 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
     held[i] = container[i] != i;
     copy[i] = held[i] && centres[container[i]] == centres[i] && radii[container[i]] == radii[i];
   }
-  std::vector<char> include(n);
-  for (std::size_t i = 0; i < n; ++i) include[i] = radii[i] > 0 && !held[i];
-  const arrangement::PowerNeighbours neighbours = arrangement::power_neighbours(centres, radii, include);
-  const SphereArranger arranger(centres, radii, neighbours);
-  std::vector<SphereResult> spheres(n);
-  ParallelExceptions errors;
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
-    errors.run(i, [&] {
-      if (held[i]) {
-        spheres[i].buried = true;
-        spheres[i].duplicate = copy[i];
-        return;
-      }
-      spheres[i] = arranger.arrange(static_cast<std::uint32_t>(i));
-    });
-  errors.rethrow();
+  std::vector<SphereResult> spheres =
+      arrangement::arrange_each_sphere(centres, radii, held, copy, std::vector<char>(n, 1));
 
   // Vertices: every arc's ends, once each, in key order.
   std::vector<std::pair<Key, Vec3>> seen;
@@ -124,101 +139,38 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
       for (const Key& key : p.keys) patch_keys.emplace_back(key, index);
     }
   }
-  // Shells: patches joined through the keys on their boundaries, keys through their aliases
-  // (union-find over patches, then keys).
-  std::vector<Key> keys;
-  keys.reserve(patch_keys.size());
-  for (const auto& pk : patch_keys) keys.push_back(pk.first);
+  result.stats.vertices = result.vertices.size();
+  result.stats.arcs = result.arcs.size();
   std::vector<std::pair<Key, Key>> aliases;
   for (const SphereResult& s : spheres) aliases.insert(aliases.end(), s.aliases.begin(), s.aliases.end());
-  for (const auto& [x, y] : aliases) {
-    keys.push_back(x);
-    keys.push_back(y);
-  }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  spheres = {};
   const std::size_t patches = result.patches.size();
-  auto key_node = [&](const Key& k) {
-    return static_cast<std::uint32_t>(patches + (std::lower_bound(keys.begin(), keys.end(), k) - keys.begin()));
-  };
-  std::vector<std::uint32_t> parent(patches + keys.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](std::uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  auto unite = [&](std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    parent[std::max(a, b)] = std::min(a, b);
-  };
-  for (const auto& [key, patch] : patch_keys) unite(patch, key_node(key));
-  for (const auto& [x, y] : aliases) unite(key_node(x), key_node(y));
+  arrangement::PatchLinks links(patches, patch_keys, aliases);
 
-  // Shell measures, each about its own first sphere's centre (the divergence theorem's
-  // origin is free; a near one keeps the sum's cancellation small).
+  // Shell measures, each about its own first sphere's centre.
   std::vector<std::int64_t> shell_of(patches, -1);
-  std::vector<Vec3> origin;
-  std::vector<ArrangementShell> shells;
-  // A bound on each shell volume's rounding: a patch's area and vector area come from
-  // integrals of order r^2 on the unit sphere, each some 1e-15 r^2 off, summed over its arcs.
-  std::vector<double> volume_error;
+  std::vector<arrangement::ShellMoments> moments;
+  std::vector<std::vector<std::uint32_t>> shell_spheres;
   for (std::uint32_t p = 0; p < patches; ++p) {
-    const std::uint32_t root = find(p);
-    if (shell_of[root] < 0) {
-      shell_of[root] = static_cast<std::int64_t>(shells.size());
-      shells.emplace_back();
-      origin.push_back(centres[result.patches[p].sphere]);
-      volume_error.push_back(0);
-    }
-    const auto s = static_cast<std::size_t>(shell_of[root]);
+    const std::uint32_t root = links.root(p);
     ArrangementPatch& patch = result.patches[p];
     const std::uint32_t i = patch.sphere;
-    ArrangementShell& shell = shells[s];
-    shell.area += patch.area;
-    shell.volume += (radii[i] * patch.area + dot(centres[i] - origin[s], patch.vector_area)) / 3;
-    shell.centroid += (centres[i] - origin[s]) * patch.area + radii[i] * patch.vector_area;
-    volume_error[s] += 1e-12 * radii[i] * radii[i] * (radii[i] + norm(centres[i] - origin[s]));
-    if (shell.spheres.empty() || shell.spheres.back() != i) shell.spheres.push_back(i);
+    if (shell_of[root] < 0) {
+      shell_of[root] = static_cast<std::int64_t>(moments.size());
+      moments.emplace_back();
+      moments.back().origin = centres[i];
+      shell_spheres.emplace_back();
+    }
+    const auto s = static_cast<std::size_t>(shell_of[root]);
+    moments[s].add_patch(centres[i], radii[i], patch.area, patch.vector_area);
+    if (shell_spheres[s].empty() || shell_spheres[s].back() != i) shell_spheres[s].push_back(i);
     patch.shell = static_cast<std::uint32_t>(s);
   }
-  for (std::size_t s = 0; s < shells.size(); ++s) {
-    ArrangementShell& shell = shells[s];
-    shell.centroid = shell.area > 0 ? origin[s] + shell.centroid / shell.area : origin[s];
-    if (std::fabs(shell.volume) > volume_error[s]) continue;
-    // A shell too small for its volume's sign (a void of 1e-13 A^3 where four spheres nearly
-    // meet). An outer shell holds whole balls, so its area is at least that of its smallest
-    // sphere (a surface around a ball is no smaller than the ball's sphere): a shell with
-    // less is a cavity. Otherwise (not seen) its centroid decides: outside its balls, a void.
-    double smallest = std::numeric_limits<double>::infinity();
-    bool inside = false;
-    for (std::uint32_t i : shell.spheres) {
-      smallest = std::min(smallest, radii[i]);
-      const Vec3 d = shell.centroid - centres[i];
-      inside |= dot(d, d) < radii[i] * radii[i];
-    }
-    if (shell.area < 4 * kPi * smallest * smallest) inside = false;
-    shell.volume = inside ? std::fabs(shell.volume) : -std::fabs(shell.volume);
-    if (shell.volume == 0) shell.volume = inside ? 0.0 : -0.0;
-  }
-  // The largest outer shell first, then by area.
-  std::vector<std::size_t> order(shells.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
-    if (shells[x].cavity() != shells[y].cavity()) return !shells[x].cavity();
-    return shells[x].area > shells[y].area;
-  });
-  std::vector<std::uint32_t> rank(shells.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    rank[order[k]] = static_cast<std::uint32_t>(k);
-    result.shells.push_back(std::move(shells[order[k]]));
-  }
-  for (ArrangementPatch& patch : result.patches) patch.shell = rank[patch.shell];
-  for (ArrangementShell& shell : result.shells) {
-    std::sort(shell.spheres.begin(), shell.spheres.end());
-    shell.spheres.erase(std::unique(shell.spheres.begin(), shell.spheres.end()), shell.spheres.end());
-    result.volume += shell.volume;
-  }
+  arrangement::FinishedShells finished = arrangement::finish_shells(
+      moments, std::move(shell_spheres), [&](std::uint32_t i) { return arrangement::Ball{centres[i], radii[i]}; });
+  result.shells = std::move(finished.shells);
+  for (ArrangementPatch& patch : result.patches) patch.shell = finished.rank[patch.shell];
+  for (const ArrangementShell& shell : result.shells) result.volume += shell.volume;
   for (double a : result.area_per_sphere) result.area += a;
   return result;
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "blocks/block_areas.hpp"
 #include "blocks/block_partition.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_bytes.hpp"
@@ -18,7 +19,6 @@
 #include "blocks/seam.hpp"
 #include "blocks/streamed_surface.hpp"
 #include "common/thread_count_scope.hpp"
-#include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/parameters.hpp"
@@ -105,7 +105,16 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   report(SurfaceStage::union_, 0, partition.size());
   std::optional<std::vector<PieceMessage>> made = pieces_of_all_blocks<PieceMessage>(
       partition.size(), blocked.exchange,
-      [&](std::size_t b) { return make_piece(atoms, partition, b, options, result.threads); }, append_piece,
+      [&](std::size_t b) {
+        PieceMessage piece = make_piece(atoms, partition, b, options, result.threads);
+        if (options.exact_areas) {
+          const auto clock = Clock::now();
+          piece.exact = block_arrangement(block_atoms(atoms, partition, b), options.spheres, result.threads);
+          piece.seconds_exact = seconds_since(clock);
+        }
+        return piece;
+      },
+      append_piece,
       [](std::string_view bytes) { return read_pieces(bytes); },
       [&](std::size_t done) { report(SurfaceStage::union_, done, partition.size()); });
   if (!made) {
@@ -116,6 +125,8 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   if (messages.size() != partition.size()) throw std::logic_error("compute_blocked_surface: a block without its piece");
   std::vector<Mesh> pieces;
   std::vector<std::vector<SeamPoint>> seams;
+  std::vector<arrangement::ArrangementPart> parts;
+  double seconds_exact = 0;
   pieces.reserve(partition.size());
   seams.reserve(partition.size());
   Quality before;
@@ -131,6 +142,8 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     out.blocks.push_back(m.stats);
     pieces.push_back(std::move(m.mesh));
     seams.push_back(std::move(m.seam));
+    parts.push_back(std::move(m.exact));
+    seconds_exact += m.seconds_exact;
   }
   messages = {};
 
@@ -164,10 +177,11 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   clock = Clock::now();
   report(SurfaceStage::measures, 0, 1);
   const bool exact = options.exact_areas;
-  if (exact) result.exact = compute_areas(atoms, options.spheres).arrangement;
+  if (exact) result.exact = joined_block_areas(atoms, options.spheres, parts);
+  parts = {};
   result.measures = measure_surface(glued, result.check, atoms.size(), exact ? &result.exact : nullptr,
                                     &result.component_shells);
-  result.seconds.measures = seconds_since(clock);
+  result.seconds.measures = seconds_since(clock) + seconds_exact;
   report(SurfaceStage::measures, 1, 1);
   if (result.cleanup) {
     result.cleanup->after = result.check.quality;

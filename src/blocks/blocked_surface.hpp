@@ -3,8 +3,9 @@
 // (block_partition.hpp), each block's piece computed from its atoms and halo, cleaned with
 // its seam frozen and checked on its own. Glued (the default): the pieces are glued along
 // their seams, the seams' slivers cleaned with both sides in view, the whole surface checked
-// and measured as compute_surface measures one (exact areas, components and cavities joined
-// through the seams), and handed back block by block; the peak memory is the surface's.
+// and measured as compute_surface measures one (components and cavities joined through the
+// seams), and handed back block by block; the peak memory is the surface's. In both, the
+// exact areas come from each block's own arrangement (block_areas.hpp), joined.
 // Streamed (streamed_surface.hpp): each piece's faces away from the seams are handed out
 // as soon as the piece is checked and released; the peak memory is a piece's and the seams'.
 #include <cstddef>

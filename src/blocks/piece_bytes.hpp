@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "arrangement/arrangement_part.hpp"
+#include "blocks/block_areas.hpp"
 #include "blocks/byte_stream.hpp"
 #include "blocks/seam.hpp"
 #include "molsurf/cleanup.hpp"
@@ -28,6 +30,8 @@ struct PieceMessage {
   Quality before;         // of the piece before its cleanup
   CleanupStats cleanup;   // its cleanup's counts
   double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
+  arrangement::ArrangementPart exact;  // the block's exact areas (block_areas.hpp; empty without)
+  double seconds_exact = 0;
 };
 
 // A mesh's vertices, faces and atom tags; get_mesh throws std::invalid_argument for a face
@@ -36,7 +40,7 @@ void put_mesh(std::string& out, const Mesh& mesh);
 Mesh get_mesh(ByteReader& in);
 
 // What every piece carries after its meshes, glued or streamed: its counts, its quality
-// before cleanup, its cleanup's counts and its times.
+// before cleanup, its cleanup's counts, its times and its block's exact areas.
 template <class Piece>
 void put_piece_numbers(std::string& out, const Piece& p) {
   put(out, p.stats);
@@ -45,6 +49,8 @@ void put_piece_numbers(std::string& out, const Piece& p) {
   put(out, p.seconds_union);
   put(out, p.seconds_cleanup);
   put(out, p.seconds_check);
+  put_arrangement_part(out, p.exact);
+  put(out, p.seconds_exact);
 }
 template <class Piece>
 void get_piece_numbers(ByteReader& in, Piece& p) {
@@ -54,6 +60,8 @@ void get_piece_numbers(ByteReader& in, Piece& p) {
   p.seconds_union = in.get<double>();
   p.seconds_cleanup = in.get<double>();
   p.seconds_check = in.get<double>();
+  p.exact = get_arrangement_part(in);
+  p.seconds_exact = in.get<double>();
 }
 
 // Appends `piece` to `out`.

@@ -59,11 +59,13 @@ struct StreamedPiece {
   Quality quality;
   std::vector<AtomArea> atom_area;
   std::vector<WrittenPart> parts;
-  // The piece's own job.
+  // The piece's own job, and its block's exact areas (with exact_areas; empty otherwise).
   BlockStats stats;
   Quality before;
   CleanupStats cleanup;
   double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
+  arrangement::ArrangementPart exact;
+  double seconds_exact = 0;
 };
 
 struct SplitPiece {

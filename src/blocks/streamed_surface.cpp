@@ -11,13 +11,13 @@
 #include <unordered_map>
 #include <utility>
 
+#include "blocks/block_areas.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
 #include "blocks/pieces_of_all_blocks.hpp"
 #include "blocks/streamed_piece.hpp"
 #include "mesh/topology.hpp"
-#include "molsurf/compute_areas.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/surface_measures.hpp"
@@ -248,6 +248,13 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
     SplitPiece split = split_piece(make_piece(atoms, partition, b, options, result.threads), atoms, options.spheres,
                                    partition.block_of, origin);
     if (blocked.piece_done) blocked.piece_done(b, split.written);
+    // Released before the block's exact areas, so that the two never add up.
+    split.written = Mesh{};
+    if (options.exact_areas) {
+      const auto clock = Clock::now();
+      split.kept.exact = block_arrangement(block_atoms(atoms, partition, b), options.spheres, result.threads);
+      split.kept.seconds_exact = seconds_since(clock);
+    }
     return std::move(split.kept);
   };
 
@@ -299,10 +306,15 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
 
     clock = Clock::now();
     report(SurfaceStage::measures, 0, 1);
-    if (options.exact_areas) result.exact = compute_areas(atoms, options.spheres).arrangement;
+    if (options.exact_areas) {
+      std::vector<arrangement::ArrangementPart> parts;
+      for (StreamedPiece& p : pieces) parts.push_back(std::move(p.exact));
+      result.exact = joined_block_areas(atoms, options.spheres, parts);
+    }
     merge_measures(seams, pieces, atoms.size(), origin, options.exact_areas ? &result.exact : nullptr, result);
     result.check.self_intersections_checked = options.check_self_intersections;
     result.seconds.measures = seconds_since(clock);
+    for (const StreamedPiece& p : pieces) result.seconds.measures += p.seconds_exact;
     report(SurfaceStage::measures, 1, 1);
     if (result.cleanup) {
       result.cleanup->before = before;

@@ -6,8 +6,10 @@
 // which receives them from the others). The seam bands are then glued and cleaned with
 // both sides in view (the written faces near them frozen, as obstacles), checked together
 // with every border, and become one more piece. The report is merged from the summaries:
-// totals, per-atom areas, and the components joined through the band. The peak memory is
-// one piece's plus the bands and borders, not the whole surface's.
+// totals, per-atom areas, and the components joined through the band; the exact areas
+// from each block's arrangement of its own spheres (block_areas.hpp), made once the piece's
+// written faces are released. The peak memory is one piece's plus the bands and borders,
+// not the whole surface's, nor the whole structure's arrangement.
 #include <span>
 
 #include "blocks/block_partition.hpp"

@@ -40,8 +40,8 @@ ExactReport make_exact_report(const SphereArrangement& a, std::span<const std::i
         r.volume += s.volume;
       }
   }
-  r.vertices = a.vertices.size();
-  r.arcs = a.arcs.size();
+  r.vertices = a.stats.vertices;
+  r.arcs = a.stats.arcs;
   r.buried_atoms = a.stats.buried;
   r.exact_decisions = a.stats.exact_decisions;
   r.degenerate_points = a.stats.degenerate_points;
