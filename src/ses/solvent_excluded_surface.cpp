@@ -154,13 +154,6 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
   SphereUnion sweep = solvent_accessible_surface(balls, sweep_options);
   if (sweep.one_pass.open_edges > 0)
     throw std::logic_error(surface_detail::open_union_message(sweep.one_pass.open_edges));
-  // The balls' union has the short seams and slivers of any union, four times the faces
-  // its density asks (a probe ball gets the frequency of a 2.5 A sphere): cleaned by the
-  // SES's own rules before the difference, which then cuts through a third of the faces
-  // (2hhb: 0.96 M -> 0.29 M).
-  CleanupOptions sweep_cleanup = ses_cleanup_options(CleanupOptions{}, spheres.density);
-  sweep_cleanup.measure_after = false;
-  improve_surface(sweep.mesh, sweep_cleanup);
   stats.sweep_faces = sweep.mesh.face_count();
   stats.seconds_sweep = seconds_since(clock);
 
