@@ -388,6 +388,30 @@ TEST(Cleanup, GivesTheSameSurfaceOnOneAndTwoThreads) {
   EXPECT_EQ(stats[0].refused, stats[1].refused);
 }
 
+// The short edges are collapsed by cells of space in parallel (as the distorted faces are):
+// the same surface on any thread count.
+TEST(Cleanup, CollapsesShortEdgesToTheSameSurfaceOnOneAndTwoThreads) {
+  const Structure s = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
+  const Mesh raw = solvent_accessible_surface(s.atoms, {}).mesh;
+  CleanupOptions options;
+  options.min_edge_length = 0.3;
+  options.max_volume_change = 1e-3;
+  std::vector<Mesh> cleaned;
+  std::vector<CleanupStats> stats;
+  for (int threads : {1, 2}) {
+    const ThreadCountScope scope(threads);
+    cleaned.push_back(raw);
+    stats.push_back(improve_surface(cleaned.back(), options));
+  }
+  EXPECT_GT(stats[0].short_edges_before, 1000u);
+  EXPECT_LT(stats[0].short_edges_after, stats[0].short_edges_before / 10);
+  EXPECT_TRUE(cleaned[0].faces == cleaned[1].faces);
+  EXPECT_TRUE(cleaned[0].vertices == cleaned[1].vertices);
+  EXPECT_EQ(stats[0].collapses, stats[1].collapses);
+  EXPECT_EQ(stats[0].short_edges_after, stats[1].short_edges_after);
+  EXPECT_TRUE(check_mesh(cleaned[1]).valid());
+}
+
 std::vector<double> edge_lengths(const Mesh& m) {
   std::vector<double> out;
   for (const Triangle& t : m.faces)

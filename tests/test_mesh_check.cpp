@@ -598,4 +598,23 @@ TEST(MeshCheck, CountingDefectPairsStopsAtTheCap) {
 }
 
 }  // namespace
+// Examples: the lowest distinct face indices at fault, sorted, whatever the limit; every
+// one of them when the limit is unbounded (the SES draws its ridges from them), the same
+// set as the lowest ones of a smaller limit.
+TEST(MeshCheck, ExamplesAreTheLowestFacesAtFaultUpToTheLimit) {
+  const Mesh pile = coincident_tetrahedra(50);  // every face of every copy meets another
+  MeshCheckOptions every;
+  every.max_defect_pairs = 0;
+  every.max_examples = std::numeric_limits<std::size_t>::max();
+  const MeshCheck all = check_mesh(pile, every);
+  std::vector<std::size_t> faces_at_fault(pile.faces.size());
+  for (std::size_t f = 0; f < faces_at_fault.size(); ++f) faces_at_fault[f] = f;
+  EXPECT_EQ(all.examples_intersecting, faces_at_fault);
+  MeshCheckOptions few = every;
+  few.max_examples = 7;
+  const MeshCheck lowest = check_mesh(pile, few);
+  EXPECT_EQ(lowest.examples_intersecting,
+            std::vector<std::size_t>(faces_at_fault.begin(), faces_at_fault.begin() + 7));
+}
+
 }  // namespace molsurf

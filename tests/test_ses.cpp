@@ -128,6 +128,24 @@ TEST(SolventExcludedSurface, VolumeOfACrambinFragmentMatchesTheDistanceReference
   }
 }
 
+// The rolled surface's every defect makes the ridges (not the first ones the threads
+// reach), and the cleanup's sweeps are by cells: the same surface on one and two threads.
+TEST(SolventExcludedSurface, IsTheSameOnOneAndTwoThreads) {
+  const Structure crambin = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
+  const std::vector<Atom> atoms(crambin.atoms.begin(), crambin.atoms.begin() + 120);
+  std::vector<ComputedSurface> surfaces;
+  for (int threads : {1, 2}) {
+    ComputeSurfaceOptions options;
+    options.surface = SurfaceKind::ses;
+    options.threads = threads;
+    surfaces.push_back(compute_surface(atoms, options));
+  }
+  EXPECT_TRUE(surfaces[0].check.valid());
+  EXPECT_TRUE(surfaces[0].mesh.faces == surfaces[1].mesh.faces);
+  EXPECT_TRUE(surfaces[0].mesh.vertices == surfaces[1].mesh.vertices);
+  EXPECT_TRUE(surfaces[0].mesh.face_tags == surfaces[1].mesh.face_tags);
+}
+
 struct Placement {
   const char* name;
   std::vector<Atom> atoms;

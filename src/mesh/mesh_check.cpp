@@ -62,31 +62,40 @@ namespace molsurf {
 namespace {
 
 // The lowest `limit` distinct indices seen, whatever order they arrive in, so examples
-// do not depend on thread scheduling.
+// do not depend on thread scheduling. Indices are gathered and sorted in batches: a check
+// that lists every defect (the SES lists tens of thousands) would otherwise search the
+// kept ones for each index it adds.
 class LowestIndices {
  public:
   explicit LowestIndices(std::size_t limit) : limit_(limit) {}
 
   void add(std::size_t index) {
-    if (limit_ == 0 || std::find(kept_.begin(), kept_.end(), index) != kept_.end()) return;
-    if (kept_.size() < limit_) {
-      kept_.push_back(index);
-      return;
+    if (limit_ == 0) return;
+    kept_.push_back(index);
+    if (kept_.size() >= compact_at_) {
+      compact(kept_);
+      compact_at_ = std::max(2 * kept_.size(), kMinBatch);
     }
-    const auto largest = std::max_element(kept_.begin(), kept_.end());
-    if (index < *largest) *largest = index;
   }
   void merge(const LowestIndices& other) {
     for (const std::size_t i : other.kept_) add(i);
   }
   std::vector<std::size_t> sorted() const {
     std::vector<std::size_t> out = kept_;
-    std::sort(out.begin(), out.end());
+    compact(out);
     return out;
   }
 
  private:
+  static constexpr std::size_t kMinBatch = 1024;
+  void compact(std::vector<std::size_t>& v) const {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    if (v.size() > limit_) v.resize(limit_);
+  }
+
   std::size_t limit_;
+  std::size_t compact_at_ = kMinBatch;
   std::vector<std::size_t> kept_;
 };
 

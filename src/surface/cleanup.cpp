@@ -80,21 +80,68 @@ class Sweep {
       touched_.clear();
       if (distorted.empty()) break;
       std::sort(distorted.begin(), distorted.end());
-      if (sweep(distorted, stats) == 0) break;
+      const auto face_centre = [&](std::size_t q) { return centroid(distorted[q].second); };
+      const auto face_component = [&](std::size_t q) { return s_.component_of[distorted[q].second]; };
+      const auto improve = [&](Cleaner& worker, std::size_t q) {
+        worker.improve(distorted[q].second, static_cast<std::uint32_t>(q));
+      };
+      if (sweep(distorted.size(), face_centre, face_component, improve, Shares::even, stats) == 0) break;
     }
-    if (s_.options.min_edge_fraction > 0 || s_.options.min_edge_length > 0) {
-      serial.begin(nullptr);
-      serial.shorten_edges(stats);
-      WorkResult r = serial.finish();
-      add(r, stats);
-    }
+    if (s_.options.min_edge_fraction > 0 || s_.options.min_edge_length > 0) shorten_edges(stats);
   }
 
  private:
   static constexpr std::uint64_t kNoCell = ~std::uint64_t{0};
 
-  // One pass's edits; returns how many faces got one.
-  std::size_t sweep(const std::vector<std::pair<double, std::uint32_t>>& distorted, CleanupStats& stats) {
+  // How a colour's cells share the area budget left: evenly, or in proportion to the items
+  // each holds (where the items themselves change the area the same way, as collapses of
+  // short edges on a curved surface all shrink it, an even share would stop the cells with
+  // the most items first).
+  enum class Shares { even, by_items };
+
+  Vec3 centroid(std::uint32_t f) const {
+    const Triangle& t = s_.m.faces[f];
+    return (s_.m.vertices[t[0]] + s_.m.vertices[t[1]] + s_.m.vertices[t[2]]) / 3.0;
+  }
+
+  // The edges far shorter than the surface's typical edge, collapsed, shortest first,
+  // swept by cells like the distorted faces; passes until none is left or none gives way.
+  void shorten_edges(CleanupStats& stats) {
+    Cleaner& serial = *workers_.front();
+    const double floor = serial.short_edge_floor();
+    if (!(floor > 0)) return;
+    std::vector<surface_cleanup::ShortEdge> edges = serial.short_edges(floor);
+    stats.short_edges_before = edges.size();
+    const auto edge_centre = [&](std::size_t q) {
+      const auto [a, b] = edges[q].second;
+      return 0.5 * (s_.m.vertices[a] + s_.m.vertices[b]);
+    };
+    const auto edge_component = [&](std::size_t q) { return serial.vertex_component(edges[q].second[0]); };
+    const auto shorten = [&](Cleaner& worker, std::size_t q) {
+      const auto [a, b] = edges[q].second;
+      worker.shorten(a, b, floor, static_cast<std::uint32_t>(q));
+    };
+    for (int pass = 0; pass < s_.options.passes && !edges.empty(); ++pass) {
+      if (sweep(edges.size(), edge_centre, edge_component, shorten, Shares::by_items, stats) == 0) break;
+      edges = serial.short_edges(floor);
+    }
+    // What a cell's share of the budgets refused, once more with the whole of what is left.
+    if (!edges.empty()) {
+      serial.begin(nullptr);
+      for (std::size_t q = 0; q < edges.size(); ++q) shorten(serial, q);
+      WorkResult r = serial.finish();
+      add(r, stats);
+      if (r.done > 0) edges = serial.short_edges(floor);
+    }
+    touched_.clear();
+    stats.short_edges_after = edges.size();
+  }
+
+  // One pass's edits on `count` items, item q at centre_of(q) in component component_of(q),
+  // work(worker, q) making its edit; returns how many items got one.
+  template <class CentreOf, class ComponentOf, class Work>
+  std::size_t sweep(std::size_t count, CentreOf&& centre_of, ComponentOf&& component_of, Work&& work, Shares shares,
+                    CleanupStats& stats) {
     const Mesh& m = s_.m;
     // The longest face (on any axis of its box) bounds how far a worker reads beyond the
     // faces it changes; an edit may make no face longer than twice that.
@@ -142,10 +189,9 @@ class Sweep {
       std::uint32_t position;
       std::array<std::int64_t, 3> cell;
     };
-    std::vector<Entry> entries(distorted.size());
-    for (std::size_t q = 0; q < distorted.size(); ++q) {
-      const Triangle& t = m.faces[distorted[q].second];
-      const Vec3 centre = (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0;
+    std::vector<Entry> entries(count);
+    for (std::size_t q = 0; q < count; ++q) {
+      const Vec3 centre = centre_of(q);
       std::array<std::int64_t, 3> c{};
       for (int a = 0; a < 3; ++a) c[a] = coordinate(centre[a], a);
       const std::uint64_t colour = static_cast<std::uint64_t>((c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2);
@@ -167,14 +213,14 @@ class Sweep {
       const std::size_t cells = cell_start.size() - 1;
       for (std::size_t k = 0; k < cells; ++k)
         for (std::size_t q = cell_start[k]; q < cell_start[k + 1]; ++q) {
-          const std::uint32_t component = s_.component_of[distorted[entries[q].position].second];
+          const std::uint32_t component = component_of(entries[q].position);
           if (sharer_stamp_[component] != k) {
             sharer_stamp_[component] = k;
             ++volume_sharers_[component];
           }
         }
       std::vector<WorkRegion> regions(cells);
-      const double area_share = (s_.area_budget - std::abs(s_.area_drift)) / static_cast<double>(cells);
+      const double area_left = s_.area_budget - std::abs(s_.area_drift);
       for (std::size_t k = 0; k < cells; ++k) {
         const std::array<std::int64_t, 3>& c = entries[cell_start[k]].cell;
         WorkRegion& r = regions[k];
@@ -184,7 +230,9 @@ class Sweep {
           r.box.max[a] = c[a] == n[a] - 1 ? infinity : all.min[a] + static_cast<double>(c[a] + 1) * side + margin;
         }
         r.max_extent = max_extent;
-        r.area_share = area_share;
+        r.area_share = shares == Shares::even ? area_left / static_cast<double>(cells)
+                                              : area_left * static_cast<double>(cell_start[k + 1] - cell_start[k]) /
+                                                    static_cast<double>(count);
         r.volume_sharers = &volume_sharers_;
       }
       // The cells with the most faces first: the threads then end the colour together. The
@@ -202,8 +250,7 @@ class Sweep {
         errors.run(static_cast<std::int64_t>(k), [&] {
           Cleaner& worker = *workers_[static_cast<std::size_t>(omp_get_thread_num())];
           worker.begin(&regions[k]);
-          for (std::size_t q = cell_start[k]; q < cell_start[k + 1]; ++q)
-            worker.improve(distorted[entries[q].position].second, entries[q].position);
+          for (std::size_t q = cell_start[k]; q < cell_start[k + 1]; ++q) work(worker, entries[q].position);
           results[k] = worker.finish();
         });
       }
@@ -214,7 +261,7 @@ class Sweep {
         add(r, stats);
       }
       for (std::size_t q = begin; q < end; ++q) {
-        const std::uint32_t component = s_.component_of[distorted[entries[q].position].second];
+        const std::uint32_t component = component_of(entries[q].position);
         volume_sharers_[component] = 0;
         sharer_stamp_[component] = kNoCell;
       }
@@ -224,7 +271,7 @@ class Sweep {
     std::sort(deferred.begin(), deferred.end());
     Cleaner& serial = *workers_.front();
     serial.begin(nullptr);
-    for (std::uint32_t q : deferred) serial.improve(distorted[q].second, q);
+    for (std::uint32_t q : deferred) work(serial, q);
     WorkResult r = serial.finish();
     done += r.done;
     add(r, stats);

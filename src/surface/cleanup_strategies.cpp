@@ -394,11 +394,10 @@ void Cleaner::move_candidates(Index v, std::vector<Option>& out) const {
 // faces around such an edge for overlapping. A collapse here may not make the worst
 // angle it touches worse than it was or than the angle target; every other rule of an
 // edit holds (link condition, no face turned, budgets, the exact crossing test).
-std::vector<std::pair<double, std::array<Index, 2>>> Cleaner::short_edges(double floor) const {
+std::vector<ShortEdge> Cleaner::short_edges(double floor) const {
   // Each edge once, from the face that runs it upward; squared lengths first (the root
   // only below the floor's square, widened past its rounding), sorted after.
   const double floor2 = floor * floor * (1 + 1e-12);
-  using ShortEdge = std::pair<double, std::array<Index, 2>>;
   auto out = gather_edges(m_, editor_, [&](Index a, Index b) -> std::optional<ShortEdge> {
     if (a > b) return std::nullopt;
     const Vec3 d = m_.vertices[b] - m_.vertices[a];
@@ -410,7 +409,7 @@ std::vector<std::pair<double, std::array<Index, 2>>> Cleaner::short_edges(double
   return out;
 }
 
-void Cleaner::shorten_edges(CleanupStats& stats) {
+double Cleaner::short_edge_floor() const {
   // The median edge from squared lengths (the root of the median square is the median
   // length): the same in any order. Each edge once, from the face that runs it upward.
   const double median2 =
@@ -423,27 +422,25 @@ void Cleaner::shorten_edges(CleanupStats& stats) {
             visit(dot(d, d));
           }
       });
-  if (std::isnan(median2)) return;
-  const double floor = std::max(options_.min_edge_fraction * std::sqrt(median2), options_.min_edge_length);
-  std::vector<std::pair<double, std::array<Index, 2>>> edges = short_edges(floor);
-  stats.short_edges_before = edges.size();
-  for (int pass = 0; pass < options_.passes && !edges.empty(); ++pass) {
-    std::size_t done = 0;
-    for (const auto& [length, edge] : edges) {
-      const auto [a, b] = edge;
-      if (!(norm(m_.vertices[b] - m_.vertices[a]) < floor)) continue;  // an earlier collapse moved it
-      const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(a, b);
-      if (on_edge.size() != 2 || !editor_.link_condition(a, b, on_edge)) continue;
-      std::vector<Option> options;
-      collapse_options(a, b, on_edge, options, [&](Option& o) {
-        return evaluate(o, false) && o.after >= std::min(o.before, options_.min_angle_deg) && o.after > kSmallestNewAngle;
-      });
-      if (try_best(options)) ++done;
-    }
-    if (done == 0) break;
-    edges = short_edges(floor);
-  }
-  stats.short_edges_after = edges.size();
+  if (std::isnan(median2)) return 0;
+  return std::max(options_.min_edge_fraction * std::sqrt(median2), options_.min_edge_length);
+}
+
+void Cleaner::shorten(Index a, Index b, double floor, std::uint32_t position) {
+  if (!(norm(m_.vertices[b] - m_.vertices[a]) < floor)) return;  // an earlier collapse moved it
+  const std::vector<std::uint32_t> on_edge = editor_.faces_on_edge(a, b);
+  if (on_edge.size() != 2 || !editor_.link_condition(a, b, on_edge)) return;
+  deferred_ = false;
+  std::vector<Option> options;
+  collapse_options(a, b, on_edge, options, [&](Option& o) {
+    return evaluate(o, false) && o.after >= std::min(o.before, options_.min_angle_deg) && o.after > kSmallestNewAngle;
+  });
+  if (try_best(options))
+    ++result_.done;
+  else if (deferred_)
+    result_.deferred.push_back(position);
+  else
+    ++result_.refused;
 }
 
 }  // namespace molsurf::surface_cleanup

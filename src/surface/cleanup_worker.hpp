@@ -67,6 +67,9 @@ struct Option {
   int rank = 0;  // 0: the seams (where spheres meet) stay where they are; 1: they move a little
 };
 
+// An edge under the short-edge floor: its length and its ends, lower index first.
+using ShortEdge = std::pair<double, std::array<Index, 2>>;
+
 // One worker of the cleanup: the edits around a distorted face, measured, tested and made.
 class Cleaner {
  public:
@@ -79,8 +82,17 @@ class Cleaner {
   // later, under its `position` in the pass's order.
   void improve(std::uint32_t f, std::uint32_t position);
   WorkResult finish();
-  // The edges far shorter than the surface's typical edge, collapsed (see cleanup_worker.cpp).
-  void shorten_edges(CleanupStats& stats);
+  // The length under which an edge is collapsed whatever its faces' angles: the larger of
+  // min_edge_fraction of the median edge and min_edge_length (0: no alive edge).
+  double short_edge_floor() const;
+  // The alive edges shorter than `floor`, shortest first (ties by their ends).
+  std::vector<ShortEdge> short_edges(double floor) const;
+  // Edge a-b collapsed if it is still shorter than `floor` and a collapse passes the rules
+  // (counted in the result; one that would leave the region is left for later under
+  // `position`, as in improve).
+  void shorten(Index a, Index b, double floor, std::uint32_t position);
+  // The component of the faces around vertex v (which has some).
+  std::uint32_t vertex_component(Index v) const { return component_of_[editor_.faces_of(v).front()]; }
 
   double min_angle(std::uint32_t f) const {
     if (std::isnan(angle_[f])) {
@@ -121,7 +133,6 @@ class Cleaner {
   void collapse_options(Index a, Index b, const std::vector<std::uint32_t>& on_edge, std::vector<Option>& out,
                         Keep&& keep) const;
   std::vector<std::int32_t> tags_of(Index v) const;
-  std::vector<std::pair<double, std::array<Index, 2>>> short_edges(double floor) const;
 
   // The cleanup's rules (cleanup_worker.cpp).
   bool evaluate(Option& o, bool must_improve = true) const;
