@@ -158,10 +158,7 @@ INSTANTIATE_TEST_SUITE_P(DataPdb, StructureInBlocks, ::testing::Values("1crn.pdb
 TEST(BlocksDegenerate, LatticeOnTheCuttingPlanes) {
   for (double spacing : {1.5, 3.0})
     for (double probe : {0.0, 1.4}) {
-      std::vector<Atom> atoms;
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j)
-          for (int k = 0; k < 3; ++k) atoms.push_back(atom_at({i * spacing, j * spacing, k * spacing}, 1.5));
+      const std::vector<Atom> atoms = testing::lattice_4x4x3(spacing);
       SphereOptions options;
       options.probe = probe;
       SCOPED_TRACE("spacing " + std::to_string(spacing) + ", probe " + std::to_string(probe));
