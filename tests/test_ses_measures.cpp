@@ -20,7 +20,7 @@ namespace {
 
 using ses_reference::atom_at;
 
-SesMeasures measured(const std::vector<Atom>& atoms, double probe, double cell = 0.25) {
+SesMeasures measured(const std::vector<Atom>& atoms, double probe, double cell = 0.35) {
   SphereOptions spheres;
   spheres.probe = probe;
   return measure_ses(atoms, probe, compute_areas(atoms, spheres).arrangement, false, cell);
@@ -101,7 +101,7 @@ TEST(SesMeasures, WhereProbesOverlapTheVolumeIsTheDistanceReferences) {
     EXPECT_GT(m.reentrant_area, 0.0) << p.name;
     expect_parts_add_up(m);
     // Halving the cells moves the numbers by far less than the mesh's errors (tenths of a percent).
-    const SesMeasures finer = measured(p.atoms, p.probe, 0.125);
+    const SesMeasures finer = measured(p.atoms, p.probe, 0.175);
     EXPECT_NEAR(finer.area / m.area, 1.0, 1e-4) << p.name;
     EXPECT_NEAR(finer.volume / m.volume, 1.0, 1e-4) << p.name;
   }
@@ -115,7 +115,7 @@ TEST(SesMeasures, CrambinsVolumeIsTheGridReferencesAndItsAreaConverges) {
   // The contact area is the arrangement's exposed patches scaled onto the atoms.
   EXPECT_NEAR(m.contact_area, 918.53, 0.01);
   expect_parts_add_up(m);
-  const SesMeasures finer = measured(atoms, 1.4, 0.125);
+  const SesMeasures finer = measured(atoms, 1.4, 0.175);
   EXPECT_NEAR(finer.area / m.area, 1.0, 1e-4) << finer.area << " vs " << m.area;
   EXPECT_NEAR(finer.volume / m.volume, 1.0, 1e-4) << finer.volume << " vs " << m.volume;
 }

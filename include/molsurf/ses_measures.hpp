@@ -13,7 +13,7 @@
 // wherever else a patch point lies nearer than a probe radius to another probe position, the
 // point is not on the SES: toroidal and reentrant patches are integrated by Gauss quadrature
 // (2 x 2 points) over cells of about `cell` A, each point counted when no probe position is
-// nearer, and cells whose points or corners disagree are halved, six times. Where no other
+// nearer, and cells whose points or corners disagree are halved, four times. Where no other
 // probe cuts a patch this is exact to a few parts in a million; where one does, halving the
 // cells moves crambin's area and volume by about 1e-5 (tests/test_ses_measures.cpp).
 //
@@ -40,6 +40,6 @@ struct SesMeasures {
 // surface and its volume, cavities filled). Parallel (OpenMP); the result does not depend on
 // the thread count.
 SesMeasures measure_ses(std::span<const Atom> atoms, double probe, const SphereArrangement& arrangement,
-                        bool outer_only = false, double cell = 0.25);
+                        bool outer_only = false, double cell = 0.35);
 
 }  // namespace molsurf

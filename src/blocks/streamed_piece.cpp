@@ -53,7 +53,7 @@ BoundingBox sphere_box(const Atom& atom, const SphereOptions& spheres, double re
   return box;
 }
 
-// The boxes of some atoms' spheres grown by kBorderReach, found by place.
+// The boxes of some atoms' spheres grown by border_reach, found by place.
 class AtomBoxGrid {
  public:
   AtomBoxGrid(std::vector<BoundingBox> boxes, double cell) : boxes_(std::move(boxes)), cell_(cell) {
@@ -103,6 +103,10 @@ double six_volume_about(const Mesh& mesh, std::size_t face, const Vec3& origin) 
   return dot(a, cross(b, c));
 }
 
+double border_reach(const SphereOptions& spheres) {
+  return 0.5 + 1.5 * 1.1 / std::sqrt(std::max(spheres.density, 0.01));
+}
+
 double stray_of(const Mesh& mesh, std::size_t face, std::span<const Atom> atoms, const SphereOptions& spheres) {
   const std::int32_t tag = mesh.tag(face);
   if (tag < 0 || static_cast<std::size_t>(tag) >= atoms.size()) return HUGE_VAL;
@@ -140,7 +144,7 @@ SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const 
   double cell = 0;
   for (std::size_t a = 0; a < atoms.size(); ++a) {
     if (block_of[a] == piece.block && !band_atom[a]) continue;
-    const BoundingBox box = sphere_box(atoms[a], spheres, kBorderReach);
+    const BoundingBox box = sphere_box(atoms[a], spheres, border_reach(spheres));
     if (written_box.empty() || !box.overlaps(written_box)) continue;
     cell = std::max(cell, box.max.x - box.min.x);
     boxes.push_back(box);

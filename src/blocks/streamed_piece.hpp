@@ -26,9 +26,12 @@ namespace molsurf::blocks {
 inline constexpr int kBandRings = kSeamCleanupBand + 1;
 
 // How far a face may lie outside the box of its atom's sphere (angstrom) for the border to
-// hold every face that another block's face can reach. Every face is measured against it
-// (the polyhedra's area correction and the cleanups move faces by hundredths of an angstrom).
-inline constexpr double kBorderReach = 0.5;
+// hold every face that another block's face can reach. Every face is measured against it.
+// The polyhedra's area correction moves faces by hundredths of an angstrom, but a face the
+// cleanup flips or collapses across a seam keeps its atom and reaches into its neighbour's
+// sphere by up to an edge (a capsid face lay 0.565 A out at density 2): half an angstrom
+// and one and a half times the edge length the density asks for (1.1 / sqrt(density) A).
+double border_reach(const SphereOptions& spheres);
 
 struct AtomArea {
   std::uint32_t atom = 0;

@@ -122,9 +122,9 @@ void check_seams(const Mesh& seams, std::span<const StreamedPiece> pieces, const
     }
   }
   for (std::size_t f = 0; f < seams.faces.size(); ++f) stray = std::max(stray, stray_of(seams, f, atoms, options.spheres));
-  if (stray > kBorderReach)
+  if (const double reach = border_reach(options.spheres); stray > reach)
     throw Error("--blocks: a face lies " + std::to_string(stray) + " A outside its atom's sphere, beyond the " +
-                std::to_string(kBorderReach) + " A the check of the seams covers; write one file (--merge)");
+                std::to_string(reach) + " A the check of the seams covers; write one file (--merge)");
   MeshCheckOptions check_options;
   check_options.self_intersections = options.check_self_intersections;
   const MeshCheck check = check_mesh(together, check_options);

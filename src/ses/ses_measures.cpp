@@ -18,7 +18,7 @@ namespace molsurf {
 namespace {
 
 constexpr int kMaxAtoms = 8;      // atoms one reentrant patch may touch (more: the rest share the last slot)
-constexpr int kRefinements = 6;   // halvings of a cell where the SES's edge crosses it
+constexpr int kRefinements = 4;   // halvings of a cell where the SES's edge crosses it
 
 // What one patch adds: area, the divergence integral, and area per touched atom (its slots).
 struct PatchSum {
