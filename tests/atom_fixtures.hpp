@@ -25,4 +25,14 @@ inline std::vector<Atom> lattice_4x4x3(double spacing) {
   return atoms;
 }
 
+// A row of four atoms 1.5 A apart, a copy of atom 2 (index 4) and an atom inside atom 2's
+// ball (index 5): split into two blocks, the copy falls in the other block.
+inline std::vector<Atom> row_with_copies() {
+  std::vector<Atom> atoms;
+  for (int i = 0; i < 4; ++i) atoms.push_back(atom_at({1.5 * i, 0, 0}, 1.5));
+  atoms.push_back(atom_at({3.0, 0, 0}, 1.5));
+  atoms.push_back(atom_at({3.0, 0, 0}, 1.0));
+  return atoms;
+}
+
 }  // namespace molsurf::testing

@@ -169,10 +169,7 @@ TEST(BlocksDegenerate, LatticeOnTheCuttingPlanes) {
 // Copies of an atom in different blocks: the lowest index keeps its faces, whichever
 // block holds it, and a copy held by another's ball adds nothing there either.
 TEST(BlocksDegenerate, DuplicatesSplitAcrossBlocks) {
-  std::vector<Atom> atoms;
-  for (int i = 0; i < 4; ++i) atoms.push_back(atom_at({1.5 * i, 0, 0}, 1.5));
-  atoms.push_back(atom_at({3.0, 0, 0}, 1.5));  // a copy of atom 2, cut into the other block
-  atoms.push_back(atom_at({3.0, 0, 0}, 1.0));  // inside atom 2's ball
+  const std::vector<Atom> atoms = testing::row_with_copies();  // 4: a copy of atom 2; 5: inside its ball
   const BlockPartition partition = partition_blocks(atoms, SphereOptions{}, 2);
   ASSERT_NE(partition.block_of[2], partition.block_of[4]);
   EXPECT_TRUE(partition.contained[4]);
