@@ -122,7 +122,7 @@ struct ComputedSurface {
   std::vector<std::string> notes;
   MeshCheck check;                       // of `mesh`: valid
   std::optional<CleanupStats> cleanup;   // absent when cleanup is off
-  std::optional<TruePointStats> true_points;  // with ComputeSurfaceOptions::true_points
+  std::optional<TruePointStats> true_points;  // with ComputeSurfaceOptions::true_points; always for the SES
   Quality quality_before;                // of the union, before cleanup
   Quality quality_after;                 // of `mesh` (equal to quality_before without cleanup)
   SurfaceMeasures measures;  // the facets'

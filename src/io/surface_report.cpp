@@ -243,8 +243,9 @@ std::string format_surface_report(const SurfaceReport& r) {
     const TruePointStats& t = *r.true_points;
     char left[64];
     std::snprintf(left, sizeof left, "%.2g", t.max_distance_left);
+    // The SES moves its toroidal and reentrant vertices only (ses_true_points.hpp).
     row("true points", std::to_string(t.on_true_point) + " of " + std::to_string(t.vertices) +
-                           " vertices on the true surface, " + std::to_string(t.partly) + " halfway, " +
+                           (r.surface == "ses" ? " toroidal and reentrant" : "") + " vertices on the true surface, " + std::to_string(t.partly) + " halfway, " +
                            std::to_string(t.not_moved) + " not moved (largest distance left " + left + " A)");
   }
   row(r.cleanup ? "quality after" : "quality",

@@ -17,6 +17,7 @@
 #include "surface/one_pass/one_pass_union.hpp"
 #include "surface/solvent_accessible_surface.hpp"
 #include "surface/surface_job_options.hpp"
+#include "ses/ses_true_points.hpp"
 #include "surface/true_points.hpp"
 
 namespace molsurf {
@@ -105,7 +106,14 @@ class Pipeline {
       seconds_.cleanup += seconds_since(clock);
       report(SurfaceStage::cleanup, 1, 1);
     }
-    if (options_.true_points) {  // counted with the cleanup: both edit the mesh
+    if (options_.surface == SurfaceKind::ses) {
+      // The SES's vertices onto its true patches: the facets' roughness put 0.9 % on
+      // crambin's area at density 2, on the true patches it is 0.1 % (docs/ses.md).
+      clock = std::chrono::steady_clock::now();
+      attempt.true_points = ses_detail::move_to_ses_points(attempt.mesh, atoms_, options_.spheres.probe,
+                                                           *attempt.ses_arrangement);
+      seconds_.cleanup += seconds_since(clock);
+    } else if (options_.true_points) {  // counted with the cleanup: both edit the mesh
       clock = std::chrono::steady_clock::now();
       attempt.true_points = move_to_true_points(attempt.mesh, atoms_, options_.spheres);
       seconds_.cleanup += seconds_since(clock);

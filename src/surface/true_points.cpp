@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <optional>
 #include <vector>
 
-#include "mesh/mesh_editor.hpp"
+#include "mesh/move_vertices.hpp"
 
 namespace molsurf {
 
@@ -59,60 +60,30 @@ std::optional<Vec3> at_triple_point(const Ball& a, const Ball& b, const Ball& c,
 
 TruePointStats move_to_true_points(Mesh& mesh, std::span<const Atom> atoms, const SphereOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  TruePointStats stats;
-  if (mesh.faces.empty()) return stats;
-  double total = 0;
-  for (const Triangle& t : mesh.faces)
-    total += norm(mesh.vertices[t[1]] - mesh.vertices[t[0]]) + norm(mesh.vertices[t[2]] - mesh.vertices[t[1]]);
-  const double mean_edge = total / (2 * mesh.faces.size());
-  EditableMesh editable(mesh);
-  editable.index_all(std::max(mean_edge, 1e-9) * 2);
-  MeshEditor editor(editable);
-  constexpr double kMaxTurnCos = 0.5;  // no face turns more than 60 degrees (the cleanup's rule)
+  if (mesh.faces.empty()) return {};
+  std::vector<std::vector<std::int32_t>> tags(mesh.vertices.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    for (const Index v : mesh.faces[f]) tags[v].push_back(mesh.tag(f));
   auto ball = [&](std::int32_t atom) { return Ball{atoms[atom].centre, sphere_radius(atoms[atom], options)}; };
-  std::vector<std::int32_t> tags;
+  std::vector<Vec3> target(mesh.vertices.size());
+  std::vector<std::uint8_t> has_target(mesh.vertices.size(), 0);
   for (Index v = 0; v < mesh.vertices.size(); ++v) {
-    const std::span<const std::uint32_t> around = editor.faces_of(v);
-    if (around.empty()) continue;
-    ++stats.vertices;
-    tags.clear();
-    for (const std::uint32_t f : around) tags.push_back(mesh.tag(f));
-    std::sort(tags.begin(), tags.end());
-    tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+    std::vector<std::int32_t>& t = tags[v];
+    if (t.empty()) continue;
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+    if (t.front() < 0 || static_cast<std::size_t>(t.back()) >= atoms.size()) continue;
     const Vec3 p = mesh.vertices[v];
-    std::optional<Vec3> target;
-    if (tags.front() >= 0 && static_cast<std::size_t>(tags.back()) < atoms.size()) {
-      if (tags.size() == 1) target = on_sphere(ball(tags[0]), p);
-      if (tags.size() == 2) target = on_circle(ball(tags[0]), ball(tags[1]), p);
-      if (tags.size() == 3) target = at_triple_point(ball(tags[0]), ball(tags[1]), ball(tags[2]), p);
+    std::optional<Vec3> point;
+    if (t.size() == 1) point = on_sphere(ball(t[0]), p);
+    if (t.size() == 2) point = on_circle(ball(t[0]), ball(t[1]), p);
+    if (t.size() == 3) point = at_triple_point(ball(t[0]), ball(t[1]), ball(t[2]), p);
+    if (point) {
+      target[v] = *point;
+      has_target[v] = 1;
     }
-    if (!target) {
-      ++stats.not_moved;
-      continue;
-    }
-    // The move, whole or halfway, kept when its faces face as before and cross nothing.
-    auto try_move = [&](const Vec3& q) {
-      if (q == mesh.vertices[v]) return true;
-      const MeshEdit e = editor.move(v, q);
-      for (std::size_t k = 0; k < e.faces.size(); ++k) {
-        const Triangle& t = e.after[k];
-        const Vec3& a = t[0] == v ? q : mesh.vertices[t[0]];
-        const Vec3& b = t[1] == v ? q : mesh.vertices[t[1]];
-        const Vec3& c = t[2] == v ? q : mesh.vertices[t[2]];
-        if (!MeshEditor::keeps_facing(a, b, c, e.reference[k], kMaxTurnCos)) return false;
-      }
-      if (!editor.crosses_nothing(e)) return false;
-      editor.commit(e);
-      return true;
-    };
-    if (try_move(*target)) {
-      ++stats.on_true_point;
-      continue;
-    }
-    const bool half = try_move(p + (*target - p) * 0.5);
-    ++(half ? stats.partly : stats.not_moved);
-    stats.max_distance_left = std::max(stats.max_distance_left, norm(*target - mesh.vertices[v]));
   }
+  TruePointStats stats = move_vertices_toward(mesh, target, has_target, 0);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
