@@ -40,10 +40,19 @@ TEST(SolventExcludedSurface, OfOneAtomIsItsVanDerWaalsSphere) {
 TEST(SolventExcludedSurface, OfASmallAtomSplitsTheFacetsErrorBetweenAreaAndVolume) {
   // Its SAS sphere (r + probe 2.6 A) has frequency 4 at density 2, whose area-corrected
   // facets hold 0.58 % less volume than the sphere: the contact patch is drawn where the
-  // area is as much too large as the volume too small.
+  // area is as much too large as the volume too small. The cleanup then coarsens it to the
+  // density asked (edges under 0.57 A), within its 0.1 % budgets of area and volume.
   const double r = 1.37;
-  const ComputedSurface s = ses_of({atom_at({0.5, 0.25, -1}, r)}, 1.23);
+  const std::vector<Atom> atom = {atom_at({0.5, 0.25, -1}, r)};
+  ComputeSurfaceOptions drawn_options;
+  drawn_options.surface = SurfaceKind::ses;
+  drawn_options.spheres.probe = 1.23;
+  drawn_options.cleanup = false;
+  const ComputedSurface s = compute_surface(atom, drawn_options);
   const double area = 4 * std::numbers::pi * r * r, volume = 4.0 / 3 * std::numbers::pi * r * r * r;
+  const ComputedSurface cleaned = ses_of(atom, 1.23);
+  EXPECT_LT(relative(cleaned.measures.area, area), 0.005);
+  EXPECT_LT(relative(cleaned.measures.volume, volume), 0.005);
   EXPECT_GT(s.measures.area, area);
   EXPECT_LT(s.measures.volume, volume);
   EXPECT_LT(relative(s.measures.area, area), 0.003);
@@ -249,14 +258,20 @@ TEST(SolventExcludedSurface, ACageKeepsItsCavityAsAnInwardComponentAndOuterOnlyD
   EXPECT_GT(outer.measures.volume, all.measures.volume);  // the cavity's void is no longer taken out
 }
 
-TEST(SolventExcludedSurface, IsNotFarDenserThanTheDensityAsks) {
-  // Drawn from the SAS mesh, the SES inherits its short seam edges; the cleanup collapses
-  // those under 0.3 / sqrt(density) A. An even mesh at density 2 has about 4 faces per A^2.
+TEST(SolventExcludedSurface, HasAboutTheVerticesPerSquareAngstromTheDensityAsks) {
+  // Drawn from the SAS mesh, the SES inherits its short seam edges and its contact patches
+  // are the SAS's faces scaled down: 4 times the vertices asked. The cleanup collapses edges
+  // under 0.8 / sqrt(density) A (an even mesh's edge at density D is 1.07 / sqrt(D)).
   const Structure crambin = read_structure(std::string(MOLSURF_DATA_DIR) + "/pdb/1crn.pdb");
   const std::vector<Atom> atoms(crambin.atoms.begin(), crambin.atoms.begin() + 40);
-  const ComputedSurface s = ses_of(atoms);
-  EXPECT_LT(static_cast<double>(s.measures.faces) / s.measures.area, 20.0);
-  EXPECT_GE(s.quality_after.min_angle_deg, 1.0);
+  for (const double density : {0.5, 1.0, 2.0, 4.0}) {
+    SCOPED_TRACE(density);
+    const ComputedSurface s = ses_of(atoms, 1.4, density);
+    const double per_square_angstrom = static_cast<double>(s.measures.vertices) / s.measures.area;
+    EXPECT_GT(per_square_angstrom, 0.7 * density);
+    EXPECT_LT(per_square_angstrom, 1.6 * density);
+    EXPECT_GE(s.quality_after.min_angle_deg, 1.0);
+  }
 }
 
 TEST(SolventExcludedSurface, RefusesAProbeOfZeroAndAtomsOfRadiusZero) {

@@ -176,9 +176,11 @@ Mesh excluded_from(const Mesh& sas, std::span<const Atom> atoms, const SphereOpt
 
 double probe_spacing(double density) { return 1.0 / std::sqrt(density); }
 
-double arc_spacing(double density) { return 0.7 / std::sqrt(density); }
+double arc_spacing(double density) { return 0.35 / std::sqrt(density); }
 
-double ses_min_edge_length(double density) { return 0.3 / std::sqrt(density); }
+double ses_min_edge_length(double density) { return 0.8 / std::sqrt(density); }
+
+double sas_min_edge_length(double density) { return 0.3 / std::sqrt(density); }
 
 CleanupOptions ses_cleanup_options(CleanupOptions options, double density) {
   options.min_edge_length = std::max(options.min_edge_length, ses_min_edge_length(density));
@@ -212,8 +214,7 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
 
   // First from the SAS as the union left it; where that cannot be finished (its tiny faces
   // and short seams can give contact faces that rounding collapses), from the SAS without
-  // its slivers; then from the SAS with its short edges collapsed as well (the SES's own
-  // cleanup rule), which removes the SAS vertices crowded around a hole the probe only just
+  // its slivers; then from the SAS with its short edges collapsed as well, which removes the SAS vertices crowded around a hole the probe only just
   // passes (a ring of atoms 1e-3 wider than the probe's threshold).
   std::string failures;
   for (int attempt = 0; attempt < 3; ++attempt) {
@@ -221,7 +222,7 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
       if (attempt == 1) improve_surface(sas.mesh);
       if (attempt == 2) {
         CleanupOptions coarser;
-        coarser.min_edge_length = ses_min_edge_length(spheres.density);
+        coarser.min_edge_length = sas_min_edge_length(spheres.density);
         improve_surface(sas.mesh, coarser);
       }
       out.mesh = excluded_from(sas.mesh, atoms, spheres, out.arrangement, threads, out.stats);

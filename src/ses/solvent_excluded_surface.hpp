@@ -39,14 +39,20 @@ ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const Sphe
 
 // The spacing of probe centres along an arc at this density (vertices per square angstrom).
 double probe_spacing(double density);
-// The longest segment of a meridian arc at this density.
+// The longest segment of a meridian arc at this density (0.35 / sqrt(density) A: half the
+// 0.7 it was, which halved crambin's area error at density 2 once the cleanup coarsens the
+// result to the density asked; docs/ses.md, "Density").
 double arc_spacing(double density);
-// Edges of the SES shorter than this are collapsed by its cleanup (0.3 / sqrt(density)
-// angstrom: 0.21 A at density 2, where an even mesh's edge is 0.76 A).
+// Edges of the SES shorter than this are collapsed by its cleanup (0.8 / sqrt(density)
+// angstrom: 0.57 A at density 2, where an even mesh's edge is 0.76 A). The toroidal and
+// reentrant vertices go back onto the true surface after it (ses_true_points.hpp), so the
+// collapses cost little accuracy, and the mesh has about the vertices per A^2 asked.
 double ses_min_edge_length(double density);
+// Before a last attempt, the SAS's edges shorter than this are collapsed (0.3 / sqrt(density)).
+double sas_min_edge_length(double density);
 // The cleanup the SES gets, from the caller's: the SES drawn from the SAS mesh carries every
 // short seam edge of it into its strips (50 to 80 faces per A^2 at density 2), so edges
-// under ses_min_edge_length are collapsed too (1crn keeps 35 000 of 124 000 faces); and
+// under ses_min_edge_length are collapsed too (1crn keeps 9 264 of 190 000 faces); and
 // each component's volume may change by at most 0.1 % either way, since collapses across
 // the sharp ridges where overlapping probes meet cut the ridges off (four atoms whose
 // reentrant patches overlap lost 0.7 % of their volume).
