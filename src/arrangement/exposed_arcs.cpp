@@ -26,6 +26,18 @@ int SphereArranger::vertex_inside(std::uint32_t i, const SphereResult& out, std:
   return arrangement::sign_plus_root(xq, yq, p.q * p.g);
 }
 
+// Exact: does the centre of circle j (cap index) lie on cap k's side of cap k's plane
+// (+1), on the plane (0) or on the other side (-1)?
+int SphereArranger::centre_in_cap(std::uint32_t i, SphereResult& out, std::uint32_t j, std::uint32_t k) const {
+  const Vec3 &ci = c_[i], &cj = c_[out.caps[j].other], &ck = c_[out.caps[k].other];
+  const double ri = r_[i], rj = r_[out.caps[j].other], rk = r_[out.caps[k].other];
+  return exact_sign([&]<class T>() -> T {
+    const auto dj = arrangement::difference<T>(cj, ci), dk = arrangement::difference<T>(ck, ci);
+    const T ej = arrangement::sphere_term(dj, ri, rj), ek = arrangement::sphere_term(dk, ri, rk);
+    return ej * dot(dk, dj) - ek * dot(dj, dj);
+  }, out.decisions);
+}
+
 // Step 3 for circle j (cap index).
 void SphereArranger::exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<const Endpoint> ends,
                                   SphereResult& out) const {
@@ -51,6 +63,25 @@ void SphereArranger::exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<co
     const auto ex_end = static_cast<std::uint32_t>(ends[e].s < 0 ? e + 1 : e);
     const Endpoint &in = ends[in_end], &ex = ends[ex_end];
     intervals.push_back({in.theta, wrap(ex.theta - in.theta), in.margin, ex.margin, in.cap, in_end, ex_end});
+  }
+  // Where circle j and a cap's circle are nearly tangent, the cap's two ends on circle j are
+  // closer than their rounding, and their rounded order can run the interval the wrong way
+  // round: a whole turn for a point, or a point for a whole turn. A chord leaves the longer
+  // arc on the side of the circle's centre, so the interval is the longer one exactly when
+  // circle j's centre lies on the cap's side of its plane. (A ring of spheres all through
+  // one point, a probe's exact threshold, has such pairs at that point: every circle was
+  // taken as covered and every sphere as whole.)
+  thread_local std::vector<char> point_end;  // the ends of an interval of (nearly) no length
+  point_end.assign(ends.size(), 0);
+  for (Interval& iv : intervals) {
+    const double shorter = std::min(iv.length, kTurn - iv.length);
+    if (shorter > iv.margin_from + iv.margin_to) continue;
+    if (centre_in_cap(i, out, j, iv.cap) > 0) {
+      iv.length = kTurn - shorter;
+    } else {
+      iv.length = shorter;
+      point_end[iv.in_end] = point_end[iv.ex_end] = 1;
+    }
   }
   // Ends found to be the same point (a vertex on a fourth sphere) get the same angle, so
   // that the order below puts a leaving end before an entering one there: the exposed
@@ -156,10 +187,12 @@ void SphereArranger::exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<co
     if (exposed_end[e]) exposed.push_back({theta[e], ends[e].s, e});
   if (exposed.empty()) return;  // the whole circle is covered by the union of the crossing caps
   // Counter-clockwise, exposed arcs run from a leaving end (s = +1) to the next entering
-  // one; at equal angles the leaving end first (the point alone is exposed).
-  const auto by_angle = [](const Exposed& a, const Exposed& b) {
+  // one; at equal angles the leaving end first (the point alone is exposed), but a cap that
+  // only touches the circle there is entered before it is left (its interval is the point).
+  const auto rank = [&](const Exposed& e) { return point_end[e.end] ? (e.s < 0 ? 1 : 2) : (e.s > 0 ? 0 : 3); };
+  const auto by_angle = [&](const Exposed& a, const Exposed& b) {
     if (a.theta != b.theta) return a.theta < b.theta;
-    return a.s != b.s ? a.s > b.s : a.end < b.end;
+    return rank(a) != rank(b) ? rank(a) < rank(b) : a.end < b.end;
   };
   std::sort(exposed.begin(), exposed.end(), by_angle);
   // Exposed ends closer than their angles' rounding are one point too. Where several spheres
@@ -222,7 +255,7 @@ void SphereArranger::exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<co
     if (b == a) {
       delta = kTwoPi;
     } else if (theta[exposed[b].end] == theta[exposed[a].end]) {
-      delta = 0;  // one exposed point
+      delta = b > a ? 0 : kTwoPi;  // one exposed point, or all the way round back to it
     } else {
       delta = delta < 0 ? delta + kTwoPi : delta;  // from `to` counter-clockwise to `from`
       delta = delta >= kTwoPi ? delta - kTwoPi : delta;

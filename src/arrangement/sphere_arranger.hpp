@@ -124,6 +124,7 @@ class SphereArranger {
   int vertex_inside(std::uint32_t i, const SphereResult& out, std::uint32_t j, std::uint32_t k, int s,
                     std::uint32_t l, DecisionCounter& decisions) const;
   void exposed_arcs(std::uint32_t i, std::uint32_t j, std::span<const Endpoint> ends, SphereResult& out) const;
+  int centre_in_cap(std::uint32_t i, SphereResult& out, std::uint32_t j, std::uint32_t k) const;
   // Step 4 (sphere_patches.cpp): area, vector area, cycles and patches, and the keys on
   // each patch's boundary that join it into shells.
   void measure(std::uint32_t i, SphereResult& out) const;

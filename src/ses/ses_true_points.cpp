@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cmath>
 #include <vector>
 
 #include "mesh/move_vertices.hpp"
@@ -11,7 +12,7 @@
 namespace molsurf::ses_detail {
 
 TruePointStats move_to_ses_points(Mesh& mesh, std::span<const Atom> atoms, double probe,
-                                  const SphereArrangement& arrangement) {
+                                  const SphereArrangement& arrangement, double max_move) {
   const auto start = std::chrono::steady_clock::now();
   if (mesh.faces.empty() || atoms.empty() || !(probe > 0)) return {};
   const ses::NearestProbe nearest(atoms, probe, arrangement);
@@ -27,6 +28,10 @@ TruePointStats move_to_ses_points(Mesh& mesh, std::span<const Atom> atoms, doubl
     // atom's SES was 1.2 % short in area and 2.2 % in volume. None within reach, or the
     // vertex at the probe's centre: no direction to move along.
     if (q.type == PatchType::contact || !(q.distance < 2 * probe) || !(q.distance > 0)) continue;
+    // Farther than that from the true surface, the drawn surface departs from it on
+    // purpose: a crease the probe balls carved, or a tunnel pinched at a hole the probe only
+    // just passes, where the move would bridge it (+1.3 % volume on such a ring of five).
+    if (std::abs(q.distance - probe) > max_move) continue;
     target[v] = q.point + (mesh.vertices[v] - q.point) * (probe / q.distance);
     has_target[v] = 1;
   }
@@ -40,5 +45,7 @@ TruePointStats move_to_ses_points(Mesh& mesh, std::span<const Atom> atoms, doubl
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
+
+double ses_max_true_point_move(double density) { return 0.1 * std::sqrt(2 / (std::sqrt(3.0) * density)); }
 
 }  // namespace molsurf::ses_detail

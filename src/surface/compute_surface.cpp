@@ -110,8 +110,9 @@ class Pipeline {
       // The SES's vertices onto its true patches: the facets' roughness put 0.9 % on
       // crambin's area at density 2, on the true patches it is 0.1 % (docs/ses.md).
       clock = std::chrono::steady_clock::now();
-      attempt.true_points = ses_detail::move_to_ses_points(attempt.mesh, atoms_, options_.spheres.probe,
-                                                           *attempt.ses_arrangement);
+      attempt.true_points =
+          ses_detail::move_to_ses_points(attempt.mesh, atoms_, options_.spheres.probe, *attempt.ses_arrangement,
+                                         ses_detail::ses_max_true_point_move(options_.spheres.density));
       seconds_.cleanup += seconds_since(clock);
     } else if (options_.true_points) {  // counted with the cleanup: both edit the mesh
       clock = std::chrono::steady_clock::now();
