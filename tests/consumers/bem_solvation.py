@@ -6,7 +6,8 @@ solver of the Poisson (Laplace) two-dielectric problem, and the solvation energy
 checked against
   (a) Born's analytic energy of one ion, -332.0637 q^2/(2R) (1/eps_in - 1/eps_out) kcal/mol;
   (b) APBS (Debian's apbs, mg-auto, srfm smol, srad 1.4) for crambin (1crn) charged by Debian's
-      pdb2pqr (AMBER), at molsurf densities 1, 2 (and 4 with --density 4).
+      pdb2pqr (AMBER), at molsurf densities 4 and 8 (the first-order panels need 4 to 8 vertices
+      per A^2 for a few percent; any list with --densities).
 
 The solver is the induced (apparent) surface charge formulation, a second-kind boundary integral
 equation (Zauhar & Morgan 1985; Juffer et al. 1991 for kappa = 0): with eps_in inside the
@@ -26,7 +27,7 @@ package, or it is installed), the Born case is also solved with bempp-cl's two-d
 formulation (P1 spaces, as in its solvation tutorial) as a cross-check.
 
 Usage (ctest sets MOLSURF_CLI and MOLSURF_DATA_DIR):
-  bem_solvation.py [--densities 1,2] [--eps-in 1] [--workdir DIR] [--no-apbs]
+  bem_solvation.py [--densities 4,8] [--eps-in 1] [--workdir DIR] [--no-apbs]
 Exit 0: every check within tolerance; 1: a check failed; 77: a tool is missing (skip).
 """
 import argparse
@@ -520,7 +521,7 @@ def molsurf_mesh(cli, structure, out, density):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--densities", default="1,2", help="molsurf densities for 1crn (comma list)")
+    parser.add_argument("--densities", default="4,8", help="molsurf densities for 1crn (comma list)")
     parser.add_argument("--eps-in", type=float, default=1.0)
     parser.add_argument("--eps-out", type=float, default=80.0)
     parser.add_argument("--apbs-dime", type=int, default=161, help="APBS fine grid points per axis")
