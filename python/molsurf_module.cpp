@@ -46,6 +46,7 @@
 #include "molsurf/output_files.hpp"
 #include "molsurf/parameters.hpp"
 #include "molsurf/patch_types.hpp"
+#include "molsurf/reported_atom_area.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "molsurf/surface.hpp"
 #include "molsurf/surface_files.hpp"
@@ -82,7 +83,7 @@ struct SurfaceData {
   // The true spheres' numbers as the command reports them (make_exact_report, with
   // outer_only respected); computed.measures holds the facets'.
   molsurf::ExactReport exact;
-  std::vector<double> exact_atom_area;
+  std::vector<double> atom_area;  // the command's per-atom area (reported_atom_area)
   std::shared_ptr<const SurfaceData> stern;  // surface(..., stern=probe): the Stern layer
 };
 
@@ -490,15 +491,15 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     data->computed = molsurf::compute_surface(data->structure->atoms, options);
     // The true spheres' numbers, as the command's report and CSV tables give them.
     if (options.surface == molsurf::SurfaceKind::ses) {
-      // No exact SES values yet: the facets' stand in, so area, volume and atom_areas agree.
+      // As the command's report: the SES's area and volume are the facets' (its patches' in
+      // ses_patches), its per-atom areas the patches'.
       const molsurf::SurfaceMeasures& m = data->computed.measures;
       data->exact.area = m.area;
       data->exact.volume = m.volume;
-      data->exact_atom_area = m.atom_area;
     } else {
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
-      data->exact_atom_area = molsurf::exact_atom_area(data->computed.exact, outer_only);
     }
+    data->atom_area = molsurf::reported_atom_area(data->computed, outer_only);
     if (data->computed.stern) {  // the Stern layer: a surface of its own, the SAS at its probe
       auto layer = std::make_shared<SurfaceData>();
       layer->computed = *data->computed.stern;
@@ -507,7 +508,7 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
       layer->spheres.probe = *stern;
       layer->kind = molsurf::SurfaceKind::sas;
       layer->exact = molsurf::make_exact_report(layer->computed.exact, layer->computed.component_shells, outer_only);
-      layer->exact_atom_area = molsurf::exact_atom_area(layer->computed.exact, outer_only);
+      layer->atom_area = molsurf::reported_atom_area(layer->computed, outer_only);
       data->stern = std::move(layer);
     }
   }, tick);
@@ -1208,14 +1209,17 @@ PYBIND11_MODULE(molsurf, m) {
       .def_property_readonly(
           "area_per_atom",
           [](py::object self) {
-            const std::vector<double>& area = self.cast<const PySurface&>().data->exact_atom_area;
+            const std::vector<double>& area = self.cast<const PySurface&>().data->atom_area;
             return read_only_view(area.data(), {static_cast<py::ssize_t>(area.size())}, self);
           },
           "(N,) float64, A^2: each atom's exposed area on the true spheres (exact; with outer_only only\n"
-          "what lies on the outer surface); sums to area. The --per-atom CSV's area. Read-only view.")
+          "what lies on the outer surface); sums to area. For surface='ses', each atom's share of the\n"
+          "SES's patches (its contact patch, and the toroidal and reentrant area nearest its sphere;\n"
+          "with outer_only the outer surface's), summing to ses_patches['area'], not to area (the\n"
+          "facets'). The --per-atom CSV's area. Read-only view.")
       .def_property_readonly(
           "area_per_residue",
-          [](const PySurface& s) { return residue_table(*s.data->structure, s.data->exact_atom_area); },
+          [](const PySurface& s) { return residue_table(*s.data->structure, s.data->atom_area); },
           "Structured array (copy), one row per residue in order of first appearance, fields chain,\n"
           "residue_name, residue_number, insertion_code ('' when blank), atoms, area (A^2, exact as\n"
           "area_per_atom). The --per-residue CSV.")

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <nlohmann/json.hpp>
+#include <numeric>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -267,6 +269,61 @@ TEST(CliAreas, AllModelsWritesOneMeshPerModelThroughTheNameTemplate) {
   ASSERT_EQ(numbers.exit_code, 0) << numbers.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "two.vtp"));
   EXPECT_NE(read_text(dir.path() / "n.json").find("\"models\""), std::string::npos);
+}
+
+// Crambin's per-atom SES areas: every table and report gives each atom's share of the SES's
+// patches (exact, the JSON's ses_patches), the facets' only in the facet totals; with
+// --outer-only the outer surface's patches. Per residue and chain the same sums.
+TEST(CliAreas, SesPerAtomResidueAndChainAreasAreItsPatches) {
+  TempDir dir;
+  const std::string file = "'" + kData + "/pdb/1crn.pdb'";
+  const auto r = run_molsurf("-q --surface ses -o s.vtp --per-atom a.csv --per-residue r.csv --per-chain c.csv "
+                             "--sasa-structure s.cif --json r.json --depth atom " + file,
+                             dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(read_text(dir.path() / "r.json"));
+  const double patches = report.at("ses_patches").at("area").get<double>();
+  const double facets = report.at("facet_area").get<double>();
+  const std::vector<double> atoms = last_column(read_text(dir.path() / "a.csv"));
+  ASSERT_EQ(atoms.size(), 327u);
+  const auto sum = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); };
+  EXPECT_NEAR(sum(atoms), patches, 1e-9 * patches);
+  EXPECT_NEAR(sum(last_column(read_text(dir.path() / "r.csv"))), patches, 1e-9 * patches);
+  EXPECT_NEAR(sum(last_column(read_text(dir.path() / "c.csv"))), patches, 1e-9 * patches);
+  // The facets' total differs (the mesh is +0.42 % at density 2), within a percent.
+  EXPECT_GT(std::abs(facets - patches), 1e-6 * patches);
+  EXPECT_NEAR(facets, patches, 0.01 * patches);
+  // The report's rows and the JSON's atoms: the same areas.
+  const nlohmann::json& classes = report.at("classes");
+  EXPECT_NEAR(classes.at("polar").get<double>() + classes.at("apolar").get<double>(), patches, 1e-9 * patches);
+  EXPECT_NEAR(classes.at("main_chain").get<double>() + classes.at("side_chain").get<double>(), patches,
+              1e-9 * patches);
+  ASSERT_EQ(report.at("chains").size(), 1u);
+  EXPECT_NEAR(report.at("chains")[0].at("area").get<double>(), patches, 1e-9 * patches);
+  ASSERT_EQ(report.at("atoms").size(), atoms.size());
+  for (std::size_t i = 0; i < atoms.size(); ++i)
+    EXPECT_EQ(report.at("atoms")[i].at("area").get<double>(), atoms[i]) << "atom " << i;
+  const Structure written = read_structure(dir.path() / "s.cif");
+  ASSERT_EQ(written.atoms.size(), atoms.size());
+  for (std::size_t i = 0; i < atoms.size(); ++i)
+    EXPECT_NEAR(written.atoms[i].b_factor, atoms[i], 1e-4 * std::max(1.0, atoms[i])) << "atom " << i;
+
+  // --outer-only: the outer surface's patches, less than the whole (crambin's SES has a cavity).
+  const auto outer = run_molsurf("-q --surface ses --outer-only -o o.vtp --per-atom o.csv --per-chain oc.csv "
+                                 "--json o.json " + file,
+                                 dir.path());
+  ASSERT_EQ(outer.exit_code, 0) << outer.err;
+  const double outer_patches =
+      nlohmann::json::parse(read_text(dir.path() / "o.json")).at("ses_patches").at("area").get<double>();
+  EXPECT_LT(outer_patches, patches - 1);
+  EXPECT_NEAR(sum(last_column(read_text(dir.path() / "o.csv"))), outer_patches, 1e-9 * outer_patches);
+  EXPECT_NEAR(sum(last_column(read_text(dir.path() / "oc.csv"))), outer_patches, 1e-9 * outer_patches);
+
+  // --all-models: each model's rows the same patches' areas.
+  const auto models = run_molsurf("-q --surface ses --all-models -o 'm_{model}.vtp' --per-atom m.csv " + file,
+                                  dir.path());
+  ASSERT_EQ(models.exit_code, 0) << models.err;
+  EXPECT_EQ(last_column(read_text(dir.path() / "m.csv")), atoms);
 }
 
 // FreeSASA's spellings: --radii names a built-in set, --config-file reads a FreeSASA

@@ -23,6 +23,7 @@
 #include "molsurf/output_files.hpp"
 #include "molsurf/parameters.hpp"
 #include "molsurf/report.hpp"
+#include "molsurf/reported_atom_area.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "io/standard_output.hpp"
 #include "molsurf/surface_files.hpp"
@@ -285,9 +286,9 @@ int SurfaceCommand::run() const {
     report.exact->seconds = computed.seconds.measures;
     report.artefact_components = artefact_components(report.components, *report.exact);
   }
-  // Per atom and residue: the true spheres' areas (those of the cavities too unless they are dropped).
-  const std::vector<double> atom_area =
-      report.exact ? exact_atom_area(computed.exact, outer_only) : measures.atom_area;
+  // Per atom and residue: the exact areas (the true spheres', or the SES's patches'), those of
+  // the cavities too unless they are dropped.
+  const std::vector<double> atom_area = reported_atom_area(computed, outer_only, measures);
 
   if (pieces)
     files.add_text(out, blocks::pvtp_index(out, block_count, with_seams));
@@ -368,7 +369,7 @@ int SurfaceCommand::run_areas_only() const {
 
 // --all-models -o NAME_{model}.EXT: each model's surface, checked and written as one
 // surface is; the report gives every model's numbers (the true spheres', or the facets' for
-// the SES) and the file it went to.
+// the SES, whose per-atom, residue and chain rows are its patches') and the file it went to.
 int SurfaceCommand::run_model_meshes() const {
   const std::pair<bool, const char*> single_mesh[] = {{split_components, "--split-components"},
                                                       {volume_option->count() > 0, "--volume-mesh"},
@@ -415,17 +416,16 @@ int SurfaceCommand::run_model_meshes() const {
     faces[k] = measures.faces;
     FrameAreas& a = areas[k];
     a.seconds = computed.seconds.union_ + computed.seconds.cleanup + computed.seconds.check;
-    if (computed.exact.area_per_sphere.empty()) {  // the SES: the facets' numbers
+    a.atom_area = reported_atom_area(computed, outer_only, measures);
+    if (computed.exact.area_per_sphere.empty()) {  // the SES: the facets' totals
       a.area = measures.area;
       a.volume = measures.volume;
       for (const ComponentMeasure& c : measures.components) a.cavities += c.cavity();
-      a.atom_area = measures.atom_area;
     } else {
       const ExactReport exact = make_exact_report(computed.exact, {}, outer_only);
       a.area = exact.area;
       a.volume = exact.volume;
       for (const ShellReport& shell : exact.shells) a.cavities += shell.cavity;
-      a.atom_area = exact_atom_area(computed.exact, outer_only);
       if (k == 0) report.exact = exact;
     }
   }

@@ -158,7 +158,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
   json_option = app.add_option("--json", json, "Write the report as JSON to this file ('-': standard output)")
                     ->group(output_group);
   per_atom_option =
-      app.add_option("--per-atom", per_atom, "Write each atom's area (A^2) to this CSV file ('-': standard output)")
+      app.add_option("--per-atom", per_atom,
+                     "Write each atom's exact area (A^2: on the true spheres; for --surface ses its share of the\n"
+                     "SES's patches, docs/ses.md) to this CSV file ('-': standard output)")
           ->group(output_group);
   per_residue_option = app.add_option("--per-residue", per_residue,
                                       "Write each residue's area (A^2) to this CSV file ('-': standard output)")
