@@ -96,12 +96,13 @@ def test_ses_area_per_atom_is_its_patches_and_the_commands_csv(cli, data_dir, tm
     assert area.sum() == pytest.approx(patches, rel=1e-9)
     assert s.area_per_residue["area"].sum() == pytest.approx(patches, rel=1e-9)
     assert np.array_equal(area, s.ses_patches["atom_area"])
-    # The facets' stay apart: their own total, +0.42 % at density 2, and atom by atom close to
-    # the patches' (the sum of the differences within 2.5 % of the area: measured 1.2 %).
+    # The facets' stay apart: their own total, +0.35 % at density 2, and atom by atom close to
+    # the patches' (the sum of the differences within 6 % of the area: measured 4.5 %, where
+    # each face about 0.6 A wide counts whole to one atom; 1.2 % on a mesh 4 times as dense).
     assert facets.sum() == pytest.approx(s.facet_area, rel=1e-9)
     assert abs(facets.sum() - patches) > 1e-6 * patches
     assert facets.sum() == pytest.approx(patches, rel=0.01)
-    assert np.abs(area - facets).sum() < 0.025 * patches
+    assert np.abs(area - facets).sum() < 0.06 * patches
     assert s.facet_area_per_residue["area"].sum() == pytest.approx(s.facet_area, rel=1e-9)
     # The command's --per-atom CSV: the same doubles.
     subprocess.run([str(cli), "-q", "--surface", "ses", str(data_dir / "1crn.pdb"), "-o", str(tmp_path / "s.vtp"),
