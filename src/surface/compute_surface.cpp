@@ -17,6 +17,7 @@
 #include "surface/one_pass/one_pass_union.hpp"
 #include "surface/solvent_accessible_surface.hpp"
 #include "surface/surface_job_options.hpp"
+#include "ses/ses_specks.hpp"
 #include "ses/ses_true_points.hpp"
 #include "surface/true_points.hpp"
 
@@ -113,6 +114,9 @@ class Pipeline {
       attempt.true_points =
           ses_detail::move_to_ses_points(attempt.mesh, atoms_, options_.spheres.probe, *attempt.ses_arrangement,
                                          ses_detail::ses_max_true_point_move(options_.spheres.density));
+      if (const std::size_t specks = ses_detail::remove_specks(attempt.mesh, atoms_, options_.spheres.probe))
+        notes_.push_back(std::to_string(specks) +
+                         " component(s) of the drawn SES too small to hold an atom or a probe removed (docs/ses.md)");
       seconds_.cleanup += seconds_since(clock);
     } else if (options_.true_points) {  // counted with the cleanup: both edit the mesh
       clock = std::chrono::steady_clock::now();
