@@ -34,9 +34,9 @@ TEST(SesSpecks, RemovesWhatCanHoldNeitherAnAtomNorAProbeAndKeepsTheRest) {
   atom.radius = 1.2;
   const std::vector<Atom> atoms = {atom};
   const Mesh body = make_icosphere({0, 0, 0}, 6, {.frequency = 4});
-  const Mesh cavity = inward(make_icosphere({0.5, 0, 0}, 1.45, {.frequency = 3}));     // a probe's ball fits
+  const Mesh cavity = inward(make_icosphere({0.5, 0, 0}, 1.4, {.frequency = 1}));      // just a probe's ball, coarse
   const Mesh speck = make_icosphere({20, 0, 0}, 0.02, {.frequency = 1});               // 0.04 A across
-  const Mesh inner_speck = inward(make_icosphere({-3, 0, 0}, 0.5, {.frequency = 2}));  // 1 A: under 2.4
+  const Mesh inner_speck = inward(make_icosphere({-3, 0, 0}, 0.5, {.frequency = 2}));  // 1 A: under 1.2
   Mesh mesh = joined({body, cavity, speck, inner_speck});
   EXPECT_EQ(ses_detail::remove_specks(mesh, atoms, 1.4), 2u);
   const Mesh kept = joined({body, cavity});

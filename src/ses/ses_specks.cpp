@@ -13,7 +13,9 @@ std::size_t remove_specks(Mesh& mesh, std::span<const Atom> atoms, double probe)
   if (mesh.faces.empty() || atoms.empty()) return 0;
   double smallest = std::numeric_limits<double>::infinity();
   for (const Atom& a : atoms) smallest = std::min(smallest, a.radius);
-  const double ball = 2 * std::min(smallest, probe);
+  // Half the smaller ball's diameter: a cavity that just holds a probe ball, drawn with
+  // facets inside its sphere, stays.
+  const double ball = std::min(smallest, probe);
   const Components parts = connected_components(mesh);
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<Vec3> lo(parts.count, Vec3{kInf, kInf, kInf}), hi(parts.count, Vec3{-kInf, -kInf, -kInf});
