@@ -235,10 +235,13 @@ int SurfaceCommand::run() const {
   });
   const std::span<const Atom> whole = read_here ? std::span<const Atom>(read_here->atoms) : std::span<const Atom>{};
   // A job that may fill a large share of the memory trades a little time for a smaller
-  // footprint (allocation.hpp).
+  // footprint (allocation.hpp): decided on the whole structure, by the first process under
+  // mpirun, and followed by every process.
   const std::uint64_t memory = max_memory_gb > 0 ? max_memory_bytes() : available_memory_bytes();
+  bool large_job = read_here && estimate_resources(whole, spheres).bytes > memory / 32;
+  if (launch) large_job = !launch->broadcast(large_job ? "large" : "").empty();
+  if (large_job) save_memory();
   if (read_here) {
-    if (estimate_resources(whole, spheres).bytes > memory / 32) save_memory();
     const SpherePlan plan = plan_spheres(whole, spheres);
     if (!silent) text << format_read_report(read_here->report) << format_sphere_plan(plan, spheres);
     flush_standard_output();  // shown before the long work, and a broken standard output stops it
@@ -252,7 +255,6 @@ int SurfaceCommand::run() const {
   if (launch) {
     share = blocks::share_blocks(whole, compute_options(), blocked);
     blocked.share = &share;
-    if (!read_here && estimate_resources(share.atoms, spheres).bytes > memory / 32) save_memory();
   }
   // The atoms this process's files name: the whole structure, or its share (tagged by
   // their index in the whole).
