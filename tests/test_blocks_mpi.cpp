@@ -5,12 +5,16 @@
 // the same components). The exact report, which each block computes for its own atoms and the
 // first process joins, against one process's (and against three blocks made by one process,
 // through the same path): the same numbers to rounding, shells, cavities, lining atoms and
-// counts, and the same per-atom, per-residue and per-chain tables. Skipped when molsurf was
+// counts, and the same per-atom, per-residue and per-chain tables. Only the first process
+// reads the structure (a second given no structure at all writes the same bytes), and a
+// structure it cannot read stops every process with one message. Skipped when molsurf was
 // built without MPI.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -129,6 +133,62 @@ TEST_P(TwoProcesses, EqualTwoBlocksAndTheSingleProcessSurface) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DataPdb, TwoProcesses, ::testing::Values("1crn.pdb", "2hhb.pdb"));
+
+// Only the first process reads the structure; the second receives its share. Launched as
+// two programs (mpirun's MPMD form), the second is given a file that is no structure at all:
+// had it read its file it would fail, and with its share it writes the same bytes as two
+// blocks in one process.
+TEST(TwoProcesses, OnlyTheFirstReadsTheStructure) {
+#ifndef MOLSURF_MPIRUN
+  GTEST_SKIP() << "molsurf built without MPI";
+#else
+  testing::TempDir mpi, blocks;
+  {
+    std::ofstream garbage(mpi.path() / "garbage.pdb");
+    garbage << "this is no structure\n";
+  }
+  const std::string input = "'" + kData + "/pdb/2hhb.pdb'";
+  const std::string outputs = " -o s.pvtp --json s.json --per-atom a.csv -q";
+  const auto launched = testing::run_molsurf(
+      "garbage.pdb" + outputs, mpi.path(),
+      "timeout 600 " MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 1 '" MOLSURF_CLI_PATH "' " + input +
+          outputs + " : -np 1 ");
+  ASSERT_EQ(launched.exit_code, 0) << launched.err;
+  ASSERT_EQ(testing::run_molsurf(input + " --blocks 2" + outputs, blocks.path()).exit_code, 0);
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s_seams.vtp", "a.csv"}) {
+    const std::string bytes = testing::read_text(mpi.path() / name);
+    EXPECT_FALSE(bytes.empty()) << name;
+    EXPECT_EQ(bytes, testing::read_text(blocks.path() / name)) << name;
+  }
+  EXPECT_EQ(without_run_details(testing::read_text(mpi.path() / "s.json")),
+            without_run_details(testing::read_text(blocks.path() / "s.json")));
+#endif
+}
+
+// A structure the first process cannot read: every process stops with the same one-line
+// message (none waits for a share that will not come), and nothing is written.
+TEST(TwoProcesses, AReadErrorReachesEveryProcess) {
+#ifndef MOLSURF_MPIRUN
+  GTEST_SKIP() << "molsurf built without MPI";
+#else
+  testing::TempDir dir;
+  {
+    std::ofstream broken(dir.path() / "broken.pdb");
+    broken << "ATOM      1  N   THR A   1      17.047  14.099   3.625  1.00 13.79           N\n"
+              "ATOM      2  CA  THR A   1       1e400  12.784   4.338  1.00 10.80           C\n";
+  }
+  const auto launched = testing::run_molsurf("broken.pdb -o s.pvtp --json s.json", dir.path(),
+                                             "timeout 120 " MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 2 ");
+  EXPECT_NE(launched.exit_code, 0);
+  EXPECT_NE(launched.exit_code, 124) << "a process waited (timeout)";
+  // Each process writes its prefix and its message separately, and mpirun may interleave them.
+  const std::string message = "broken.pdb:2: ATOM record: x coordinate '1e400' (columns 31-38) is not a number";
+  EXPECT_EQ(count_of(launched.err, message), 2u) << launched.err;
+  EXPECT_EQ(count_of(launched.err, "molsurf: error:"), 2u) << launched.err;
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s.json"})
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / name)) << name;
+#endif
+}
 
 }  // namespace
 }  // namespace molsurf

@@ -1,6 +1,7 @@
 #pragma once
 // Mesh files: the format follows the extension. Every write is atomic: the data goes
 // to a temporary file beside the target, which is renamed over it only when complete.
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -25,6 +26,10 @@ struct MeshWriteOptions {
   // When given, face tags index these atoms: cell data gets serial, residue and chain,
   // and MSMS .vert gets each vertex's closest atom.
   std::span<const Atom> atoms;
+  // With `atoms`: the face tag each of them stands for, increasing (a process's share of a
+  // structure cut into blocks, its atoms tagged by their index in the whole structure);
+  // empty: tag k is atoms[k]. Read by the .vtp and .vtk writers; the other formats refuse it.
+  std::span<const std::uint32_t> atom_tags;
   bool ascii = false;          // .ply (binary little-endian by default), .stl
   bool msms_header = true;     // MSMS .vert/.face 3-line headers
   // MSMS .vert: the closest atom's name as a 10th column, as MSMS writes when its input

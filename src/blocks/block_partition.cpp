@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "blocks/coordinate_bisection.hpp"
+#include "blocks/held_blocks.hpp"
 #include "geometry/point_grid.hpp"
 #include "surface/atom_polyhedra.hpp"
 
@@ -52,25 +53,7 @@ BlockPartition partition_blocks(std::span<const Atom> atoms, const SphereOptions
 
 BlockAtoms block_atoms(std::span<const Atom> atoms, const BlockPartition& partition, std::size_t block) {
   if (block >= partition.size()) throw std::invalid_argument("block_atoms: no such block");
-  const auto& own = partition.atoms[block];
-  const auto& halo = partition.halo[block];
-  BlockAtoms out;
-  const std::size_t total = own.size() + halo.size();
-  out.atoms.reserve(total);
-  out.global_index.reserve(total);
-  out.in_block.reserve(total);
-  out.contained.reserve(total);
-  // Both lists increase: merged, the block and its halo keep the whole structure's order.
-  std::size_t a = 0, h = 0;
-  while (a < own.size() || h < halo.size()) {
-    const bool from_block = h == halo.size() || (a < own.size() && own[a] < halo[h]);
-    const std::uint32_t i = from_block ? own[a++] : halo[h++];
-    out.atoms.push_back(atoms[i]);
-    out.global_index.push_back(i);
-    out.in_block.push_back(from_block ? 1 : 0);
-    out.contained.push_back(partition.contained[i]);
-  }
-  return out;
+  return HeldBlocks(atoms, partition).block_atoms(block);
 }
 
 }  // namespace molsurf::blocks

@@ -12,11 +12,14 @@
 
 #include "blocks/block_areas.hpp"
 #include "blocks/block_partition.hpp"
+#include "blocks/block_share.hpp"
+#include "blocks/held_blocks.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_bytes.hpp"
 #include "blocks/pieces_of_all_blocks.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
+#include "blocks/streamed_piece.hpp"
 #include "blocks/streamed_surface.hpp"
 #include "common/thread_count_scope.hpp"
 #include "molsurf/error.hpp"
@@ -74,14 +77,31 @@ std::vector<std::string> piece_problems(const MeshCheck& check, std::size_t seam
 BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested,
                                        const BlockedSurfaceOptions& blocked) {
   const auto start = Clock::now();
-  validate(requested);
-  refuse_unsupported(requested);
-  if (blocked.blocks == 0) throw Error("--blocks: at least 1 block");
-  // Streamed, a process holds one block's spheres at a time: the limit on all spheres' faces
-  // applies to each block with its halo (below), not to the whole structure.
-  ComputeSurfaceOptions job = requested;
-  if (blocked.streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
-  const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, job);
+  const BlockShare* share = blocked.share;
+  if (share == nullptr && blocked.exchange != nullptr && blocked.exchange->size() > 1)
+    throw std::logic_error("compute_blocked_surface: the processes of an exchange need their shares (share_blocks)");
+  // The first process (or one alone) holds the whole structure: checked and cut into blocks
+  // here, or by share_blocks already. The others hold only their share, checked there.
+  std::optional<BlockJob> planned;
+  ComputeSurfaceOptions options;
+  const BlockPartition* whole_partition = nullptr;
+  if (share == nullptr) {
+    planned = plan_block_job(atoms, requested, blocked.blocks, blocked.streamed);
+    options = planned->options;
+    whole_partition = &planned->partition;
+  } else {
+    validate(requested);
+    refuse_unsupported(requested);
+    ComputeSurfaceOptions job = requested;
+    if (blocked.streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
+    if (share->partition) {
+      options = surface_detail::surface_job_options(atoms, job);
+      whole_partition = &*share->partition;
+    } else {
+      options = surface_detail::surface_job_options(share->atoms, job);
+    }
+  }
+  const HeldBlocks held = whole_partition ? HeldBlocks(atoms, *whole_partition) : HeldBlocks(*share);
 
   BlockedSurface out;
   ComputedSurface& result = out.surface;
@@ -92,35 +112,36 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     if (options.progress) options.progress(stage, done, total);
   };
 
-  const BlockPartition partition = partition_blocks(atoms, options.spheres, blocked.blocks);
   if (blocked.streamed) {
-    for (std::size_t b = 0; b < partition.size(); ++b)
-      check_sphere_resources(options.source.string() + " (block " + std::to_string(b + 1) + " of " +
-                                 std::to_string(partition.size()) + " with its halo)",
-                             block_atoms(atoms, partition, b).atoms, options.spheres, requested.max_sphere_faces);
     ComputeSurfaceOptions streamed = options;
     streamed.threads = result.threads;
-    return compute_streamed_surface(atoms, streamed, partition, blocked);
+    const Vec3 origin = whole_partition ? volume_origin(atoms) : share->origin;
+    return compute_streamed_surface(whole_partition ? atoms : std::span<const Atom>{}, whole_partition, held, origin,
+                                    streamed, blocked);
   }
-  report(SurfaceStage::union_, 0, partition.size());
+  const std::size_t block_count = held.block_count();
+  report(SurfaceStage::union_, 0, block_count);
   std::optional<std::vector<PieceMessage>> made = pieces_of_all_blocks<PieceMessage>(
-      partition.size(), blocked.exchange,
+      block_count, blocked.exchange,
       [&](std::size_t b) {
-        PieceMessage piece = make_piece(atoms, partition, b, options, result.threads);
+        PieceMessage piece = make_piece(held, b, options, result.threads);
         if (options.exact_areas) {
           const auto clock = Clock::now();
-          piece.exact = block_arrangement(block_atoms(atoms, partition, b), options.spheres, result.threads);
+          piece.exact = block_arrangement(held.block_atoms(b), options.spheres, result.threads);
           piece.seconds_exact = seconds_since(clock);
         }
         return piece;
       },
       append_piece,
       [](std::string_view bytes) { return read_pieces(bytes); },
-      [&](std::size_t done) { report(SurfaceStage::union_, done, partition.size()); });
+      [&](std::size_t done) { report(SurfaceStage::union_, done, block_count); });
   if (!made) {
     out.root = false;
     return out;
   }
+  if (whole_partition == nullptr)
+    throw std::logic_error("compute_blocked_surface: the first process without the whole structure");
+  const BlockPartition& partition = *whole_partition;
   std::vector<PieceMessage>& messages = *made;
   if (messages.size() != partition.size()) throw std::logic_error("compute_blocked_surface: a block without its piece");
   std::vector<Mesh> pieces;

@@ -21,6 +21,7 @@
 
 namespace molsurf::blocks {
 
+struct BlockShare;
 
 struct BlockedSurfaceOptions {
   std::size_t blocks = 1;
@@ -38,6 +39,11 @@ struct BlockedSurfaceOptions {
   // pieces (r, r + size, ...); the first glues (or, streamed, joins the seams), checks and
   // measures them.
   BlockExchange* exchange = nullptr;
+  // With an exchange of several processes: this process's share of the structure
+  // (share_blocks, block_share.hpp). The first process's holds the partition, and `atoms`
+  // is the whole structure there; the others hold only their blocks' atoms, halos and the
+  // atoms near them, and their `atoms` argument is ignored.
+  const BlockShare* share = nullptr;
 };
 
 struct BlockedSurface {

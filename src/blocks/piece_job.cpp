@@ -1,5 +1,7 @@
 #include "blocks/piece_job.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <string>
@@ -7,6 +9,10 @@
 #include <vector>
 
 #include "blocks/block_piece.hpp"
+#include "common/thread_count_scope.hpp"
+#include "molsurf/parameters.hpp"
+#include "molsurf/resource_limits.hpp"
+#include "surface/surface_job_options.hpp"
 #include "blocks/blocked_surface.hpp"
 #include "blocks/seam.hpp"
 #include "molsurf/error.hpp"
@@ -22,6 +28,25 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 }  // namespace
+
+BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested, std::size_t blocks,
+                        bool streamed) {
+  validate(requested);
+  refuse_unsupported(requested);
+  if (blocks == 0) throw Error("--blocks: at least 1 block");
+  ComputeSurfaceOptions job = requested;
+  if (streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
+  BlockJob out{surface_detail::surface_job_options(atoms, job), {}};
+  const ThreadCountScope thread_count(out.options.threads > 0 ? out.options.threads : omp_get_max_threads());
+  out.partition = partition_blocks(atoms, out.options.spheres, blocks);
+  if (streamed)
+    for (std::size_t b = 0; b < out.partition.size(); ++b)
+      check_sphere_resources(out.options.source.string() + " (block " + std::to_string(b + 1) + " of " +
+                                 std::to_string(out.partition.size()) + " with its halo)",
+                             block_atoms(atoms, out.partition, b).atoms, out.options.spheres,
+                             requested.max_sphere_faces);
+  return out;
+}
 
 void refuse_unsupported(const ComputeSurfaceOptions& options) {
   if (options.surface == SurfaceKind::ses)
@@ -59,14 +84,13 @@ void combine_quality(Quality& total, const Quality& part) {
   total.faces += part.faces;
 }
 
-PieceMessage make_piece(std::span<const Atom> atoms, const BlockPartition& partition, std::size_t b,
-                        const ComputeSurfaceOptions& options, int threads) {
+PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads) {
   PieceMessage m;
   m.block = b;
   auto clock = Clock::now();
-  m.stats.atoms = partition.atoms[b].size();
-  m.stats.halo_atoms = partition.halo[b].size();
-  BlockPiece piece = compute_block_piece(block_atoms(atoms, partition, b), options.spheres, threads);
+  m.stats.atoms = held.block_size(b);
+  m.stats.halo_atoms = held.halo_size(b);
+  BlockPiece piece = compute_block_piece(held.block_atoms(b), options.spheres, threads);
   m.seconds_union = seconds_since(clock);
   clock = Clock::now();
   m.before = mesh_quality(piece.mesh);
@@ -89,7 +113,7 @@ PieceMessage make_piece(std::span<const Atom> atoms, const BlockPartition& parti
   check_options.self_intersections = options.check_self_intersections;
   const MeshCheck check = check_mesh(piece.mesh, check_options);
   if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
-    std::string text = "block " + std::to_string(b) + " of " + std::to_string(partition.size()) + ": its piece has";
+    std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its piece has";
     for (const std::string& p : problems) text += " " + p + ";";
     throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});
   }

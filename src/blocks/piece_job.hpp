@@ -3,8 +3,10 @@
 // streamed_surface.cpp) do alike: refuse what blocks cannot make, make one block's piece
 // (union, cleanup with its seam band frozen, its own check) and add up the pieces' counts.
 #include <cstddef>
+#include <span>
 
 #include "blocks/block_partition.hpp"
+#include "blocks/held_blocks.hpp"
 #include "blocks/piece_bytes.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/cleanup.hpp"
@@ -18,14 +20,24 @@ inline constexpr int kPieceSeamBand = 3;
 // pieces left alone: the pieces' slivers next to their frozen band are reached too).
 inline constexpr int kSeamCleanupBand = kPieceSeamBand + 2;
 
+// What every block job decides first, from the whole structure: its options
+// (surface_job_options: the spheres checked) and its partition. Streamed, the limit on the
+// spheres' faces applies to each block with its halo (a process holds one at a time), not
+// to the whole structure. Throws molsurf::Error (or ParameterError) for a job refused.
+struct BlockJob {
+  ComputeSurfaceOptions options;
+  BlockPartition partition;
+};
+BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested, std::size_t blocks,
+                        bool streamed);
+
 // molsurf::Error for what blocks do not make: the SES, the pairwise method, outer_only,
 // true_points, the Stern layer.
 void refuse_unsupported(const ComputeSurfaceOptions& options);
 
-// Block b's piece: computed, cleaned with its seam band frozen, checked but for the seam
-// (SurfaceCheckFailed otherwise).
-PieceMessage make_piece(std::span<const Atom> atoms, const BlockPartition& partition, std::size_t b,
-                        const ComputeSurfaceOptions& options, int threads);
+// Block b's piece, from the atoms this process holds: computed, cleaned with its seam band
+// frozen, checked but for the seam (SurfaceCheckFailed otherwise).
+PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads);
 
 // The counts of one more cleanup (a piece's, or the seams').
 void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned);

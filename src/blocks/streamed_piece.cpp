@@ -107,30 +107,36 @@ double border_reach(const SphereOptions& spheres) {
   return 0.5 + 1.5 * 1.1 / std::sqrt(std::max(spheres.density, 0.01));
 }
 
-double stray_of(const Mesh& mesh, std::size_t face, std::span<const Atom> atoms, const SphereOptions& spheres) {
+Vec3 volume_origin(std::span<const Atom> atoms) {
+  BoundingBox box;
+  for (const Atom& a : atoms) box.extend(a.centre);
+  return box.empty() ? Vec3{} : 0.5 * (box.min + box.max);
+}
+
+double stray_of(const Mesh& mesh, std::size_t face, const HeldAtoms& held, const SphereOptions& spheres) {
   const std::int32_t tag = mesh.tag(face);
-  if (tag < 0 || static_cast<std::size_t>(tag) >= atoms.size()) return HUGE_VAL;
-  const BoundingBox own = sphere_box(atoms[static_cast<std::size_t>(tag)], spheres, 0);
+  const std::size_t k = tag < 0 ? HeldAtoms::kNotHeld : held.local(static_cast<std::uint32_t>(tag));
+  if (k == HeldAtoms::kNotHeld) return HUGE_VAL;
+  const BoundingBox own = sphere_box(held.atoms[k], spheres, 0);
   const BoundingBox box = bounding_box(mesh, face);
   double out = 0;
   for (int k = 0; k < 3; ++k) out = std::max({out, own.min[k] - box.min[k], box.max[k] - own.max[k]});
   return out;
 }
 
-SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const SphereOptions& spheres,
-                       std::span<const std::uint32_t> block_of, const Vec3& origin) {
+SplitPiece split_piece(PieceMessage&& piece, const HeldAtoms& held, const SphereOptions& spheres, const Vec3& origin) {
   const Mesh& mesh = piece.mesh;
   const std::size_t faces = mesh.faces.size();
   const std::vector<std::uint8_t> ring = rings_from_seam(mesh, kBandRings);
   std::vector<std::uint8_t> in_band(faces), on_band_vertex(mesh.vertices.size(), 0);
-  std::vector<std::uint8_t> band_atom(atoms.size(), 0);
+  std::vector<std::uint8_t> band_atom(held.size(), 0);  // per held atom
   BoundingBox written_box;
   for (std::size_t f = 0; f < faces; ++f) {
     const Triangle& t = mesh.faces[f];
     in_band[f] = std::min({ring[t[0]], ring[t[1]], ring[t[2]]}) <= kBandRings;
     if (in_band[f]) {
       for (Index v : t) on_band_vertex[v] = 1;
-      band_atom[static_cast<std::size_t>(mesh.tag(f))] = 1;
+      band_atom[held.local(static_cast<std::uint32_t>(mesh.tag(f)))] = 1;
     } else {
       written_box.extend(bounding_box(mesh, f));
     }
@@ -142,9 +148,9 @@ SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const 
   // so any face it could cross or touch is kept here.
   std::vector<BoundingBox> boxes;
   double cell = 0;
-  for (std::size_t a = 0; a < atoms.size(); ++a) {
-    if (block_of[a] == piece.block && !band_atom[a]) continue;
-    const BoundingBox box = sphere_box(atoms[a], spheres, border_reach(spheres));
+  for (std::size_t a = 0; a < held.size(); ++a) {
+    if (held.block_of[a] == piece.block && !band_atom[a]) continue;
+    const BoundingBox box = sphere_box(held.atoms[a], spheres, border_reach(spheres));
     if (written_box.empty() || !box.overlaps(written_box)) continue;
     cell = std::max(cell, box.max.x - box.min.x);
     boxes.push_back(box);
@@ -157,7 +163,7 @@ SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const 
     if (in_band[f]) continue;
     written[f] = 1;
     in_border[f] = near.meets(bounding_box(mesh, f));
-    kept.stray = std::max(kept.stray, stray_of(mesh, f, atoms, spheres));
+    kept.stray = std::max(kept.stray, stray_of(mesh, f, held, spheres));
   }
   {
     std::unordered_set<std::uint64_t> outside;  // directed edges of written faces not in the border

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "blocks/piece_bytes.hpp"
+#include "blocks/held_blocks.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
 #include "molsurf/atoms.hpp"
@@ -76,10 +77,15 @@ struct SplitPiece {
   StreamedPiece kept;
 };
 
-// `piece` (checked but for its seam) split as above. `block_of`: each atom's block;
-// `origin`: the point every piece's volume is taken about.
-SplitPiece split_piece(PieceMessage&& piece, std::span<const Atom> atoms, const SphereOptions& spheres,
-                       std::span<const std::uint32_t> block_of, const Vec3& origin);
+// `piece` (checked but for its seam) split as above. `held`: the atoms this process holds
+// (the whole structure, or its share: the border is cut against the held atoms, which hold
+// every atom whose grown box a face that check_seams accepts can meet); `origin`: the point
+// every piece's volume is taken about (volume_origin).
+SplitPiece split_piece(PieceMessage&& piece, const HeldAtoms& held, const SphereOptions& spheres, const Vec3& origin);
+
+// The point every piece's volume is taken about: the atoms' box centre, the same on every
+// process (small coordinates about it lose little to cancellation).
+Vec3 volume_origin(std::span<const Atom> atoms);
 
 // The kept part as bytes (streamed_piece_bytes.cpp), appended to `out`; and the pieces
 // `bytes` holds (std::invalid_argument for bytes append_streamed_piece did not write).
@@ -88,7 +94,8 @@ std::vector<StreamedPiece> read_streamed_pieces(std::string_view bytes);
 
 // Six times the signed volume of the tetrahedron from `origin` to face f.
 double six_volume_about(const Mesh& mesh, std::size_t face, const Vec3& origin);
-// How far face f lies outside the box of its atom's sphere (0 inside).
-double stray_of(const Mesh& mesh, std::size_t face, std::span<const Atom> atoms, const SphereOptions& spheres);
+// How far face f lies outside the box of its atom's sphere (0 inside; infinite when its
+// atom is not held).
+double stray_of(const Mesh& mesh, std::size_t face, const HeldAtoms& held, const SphereOptions& spheres);
 
 }  // namespace molsurf::blocks

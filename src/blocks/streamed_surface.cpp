@@ -49,14 +49,6 @@ PointKey key_of(const Vec3& p) {
           std::bit_cast<std::uint64_t>(p.z + 0.0)};
 }
 
-// The point every piece's volume is taken about: the atoms' box centre, the same on every
-// process (small coordinates about it lose little to cancellation).
-Vec3 volume_origin(std::span<const Atom> atoms) {
-  BoundingBox box;
-  for (const Atom& a : atoms) box.extend(a.centre);
-  return box.empty() ? Vec3{} : 0.5 * (box.min + box.max);
-}
-
 std::uint32_t root_of(std::vector<std::uint32_t>& parent, std::uint32_t x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;
@@ -100,7 +92,8 @@ Mesh joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOptions& opti
 // The cleaned seams and every border, glued where they share vertices (by exact position),
 // checked as a piece is: its only boundary where the borders meet written faces left out.
 void check_seams(const Mesh& seams, std::span<const StreamedPiece> pieces, const ComputeSurfaceOptions& options,
-                 std::span<const Atom> atoms) {
+                 std::span<const Atom> atoms, const BlockPartition& partition) {
+  const HeldAtoms whole{atoms, {}, partition.block_of, partition.contained};
   Mesh together = seams;
   std::unordered_map<PointKey, Index, PointHash> vertex_at;
   for (Index v = 0; v < together.vertices.size(); ++v) vertex_at.emplace(key_of(together.vertices[v]), v);
@@ -121,7 +114,7 @@ void check_seams(const Mesh& seams, std::span<const StreamedPiece> pieces, const
       together.face_tags.push_back(p.border.tag(f));
     }
   }
-  for (std::size_t f = 0; f < seams.faces.size(); ++f) stray = std::max(stray, stray_of(seams, f, atoms, options.spheres));
+  for (std::size_t f = 0; f < seams.faces.size(); ++f) stray = std::max(stray, stray_of(seams, f, whole, options.spheres));
   if (const double reach = border_reach(options.spheres); stray > reach)
     throw Error("--blocks: a face lies " + std::to_string(stray) + " A outside its atom's sphere, beyond the " +
                 std::to_string(reach) + " A the check of the seams covers; write one file (--merge)");
@@ -232,8 +225,9 @@ void merge_measures(const Mesh& seams, std::span<const StreamedPiece> pieces, st
 
 }  // namespace
 
-BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
-                                        const BlockPartition& partition, const BlockedSurfaceOptions& blocked) {
+BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const BlockPartition* partition,
+                                        const HeldBlocks& held, const Vec3& origin,
+                                        const ComputeSurfaceOptions& options, const BlockedSurfaceOptions& blocked) {
   const auto start = Clock::now();
   BlockedSurface out;
   ComputedSurface& result = out.surface;
@@ -242,23 +236,22 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
     throw_if_cancelled(options.cancel);
     if (options.progress) options.progress(stage, done, total);
   };
-  const Vec3 origin = volume_origin(atoms);
   // One block's piece: made, its written faces handed out and released, the rest kept.
   auto make = [&](std::size_t b) {
-    SplitPiece split = split_piece(make_piece(atoms, partition, b, options, result.threads), atoms, options.spheres,
-                                   partition.block_of, origin);
+    SplitPiece split = split_piece(make_piece(held, b, options, result.threads), held.held(), options.spheres, origin);
     if (blocked.piece_done) blocked.piece_done(b, split.written);
     // Released before the block's exact areas, so that the two never add up.
     split.written = Mesh{};
     if (options.exact_areas) {
       const auto clock = Clock::now();
-      split.kept.exact = block_arrangement(block_atoms(atoms, partition, b), options.spheres, result.threads);
+      split.kept.exact = block_arrangement(held.block_atoms(b), options.spheres, result.threads);
       split.kept.seconds_exact = seconds_since(clock);
     }
     return std::move(split.kept);
   };
 
-  report(SurfaceStage::union_, 0, partition.size());
+  const std::size_t blocks = held.block_count();
+  report(SurfaceStage::union_, 0, blocks);
   BlockExchange* exchange = blocked.exchange;
   const bool shared = exchange != nullptr && exchange->size() > 1;
   // Each process writes its own pieces and sends the first what it kept (or what went
@@ -267,9 +260,9 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
   std::optional<std::vector<StreamedPiece>> made;
   try {
     made = pieces_of_all_blocks<StreamedPiece>(
-        partition.size(), exchange, make, append_streamed_piece,
+        blocks, exchange, make, append_streamed_piece,
         [](std::string_view bytes) { return read_streamed_pieces(bytes); },
-        [&](std::size_t done) { report(SurfaceStage::union_, done, partition.size()); });
+        [&](std::size_t done) { report(SurfaceStage::union_, done, blocks); });
   } catch (const std::exception& e) {
     if (shared && exchange->rank() == 0) exchange->broadcast(e.what());
     throw;
@@ -282,7 +275,9 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
   }
   std::vector<StreamedPiece>& pieces = *made;
   try {
-    if (pieces.size() != partition.size()) throw std::logic_error("compute_streamed_surface: a block without its piece");
+    if (partition == nullptr || atoms.size() != held.total_atoms())
+      throw std::logic_error("compute_streamed_surface: the first process without the whole structure");
+    if (pieces.size() != blocks) throw std::logic_error("compute_streamed_surface: a block without its piece");
     Quality before;
     for (const StreamedPiece& p : pieces) {
       combine_quality(before, p.before);
@@ -298,9 +293,9 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Compu
       out.blocks.push_back(stats);
     }
     report(SurfaceStage::check, 0, 1);
-    const Mesh seams = joined_seams(atoms, options, partition, pieces, result);
+    const Mesh seams = joined_seams(atoms, options, *partition, pieces, result);
     auto clock = Clock::now();
-    check_seams(seams, pieces, options, atoms);
+    check_seams(seams, pieces, options, atoms, *partition);
     result.seconds.check += seconds_since(clock);
     report(SurfaceStage::check, 1, 1);
 

@@ -14,13 +14,18 @@
 
 #include "blocks/block_partition.hpp"
 #include "blocks/blocked_surface.hpp"
+#include "blocks/held_blocks.hpp"
 #include "molsurf/atoms.hpp"
 #include "molsurf/compute_surface.hpp"
 
 namespace molsurf::blocks {
 
-// `options`: the job's (surface_job_options), its thread count already set.
-BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
-                                        const BlockPartition& partition, const BlockedSurfaceOptions& blocked);
+// `options`: the job's (surface_job_options), its thread count already set. `held`: what
+// this process makes its pieces from; `origin`: the whole structure's volume_origin. On the
+// first process (or one alone), which joins the seams, `atoms` is the whole structure and
+// `partition` the job's; the others, which hold only their share, give neither.
+BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const BlockPartition* partition,
+                                        const HeldBlocks& held, const Vec3& origin,
+                                        const ComputeSurfaceOptions& options, const BlockedSurfaceOptions& blocked);
 
 }  // namespace molsurf::blocks

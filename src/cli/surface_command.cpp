@@ -10,7 +10,9 @@
 #include <span>
 #include <thread>
 
+#include "blocks/block_share.hpp"
 #include "blocks/blocked_surface.hpp"
+#include "blocks/first_process_verdict.hpp"
 #include "blocks/pvtp_index.hpp"
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
@@ -220,31 +222,54 @@ int SurfaceCommand::run() const {
   note_threads(*this);
   SurfaceReport report;
   const auto read_start = std::chrono::steady_clock::now();
-  const Structure s = read_structure(structure, read_options());
-  report.seconds.read = seconds_since(read_start);
-  // compute_surface refuses the same; checked here too so that nothing is printed first.
-  // Streamed pieces hold one block's spheres at a time: the blocked job checks each block.
-  if (!pieces) check_sphere_resources(structure, s.atoms, spheres, max_faces);
+  // Under mpirun the first process alone reads the structure, and every process hears
+  // whether it could; the others then receive their blocks' share of it (block_share.hpp)
+  // and never hold the whole structure.
+  blocks::BlockExchange* launch = launched ? exchange : nullptr;
+  std::optional<Structure> read_here;
+  blocks::on_first_process(launch, [&] {
+    read_here = read_structure(structure, read_options());
+    report.seconds.read = seconds_since(read_start);
+    // compute_surface refuses the same; checked here too so that nothing is printed first.
+    // Streamed pieces hold one block's spheres at a time: the blocked job checks each block.
+    if (!pieces) check_sphere_resources(structure, read_here->atoms, spheres, max_faces);
+  });
+  const std::span<const Atom> whole = read_here ? std::span<const Atom>(read_here->atoms) : std::span<const Atom>{};
   // A job that may fill a large share of the memory trades a little time for a smaller
-  // footprint (allocation.hpp).
+  // footprint (allocation.hpp): decided on the whole structure, by the first process under
+  // mpirun, and followed by every process.
   const std::uint64_t memory = max_memory_gb > 0 ? max_memory_bytes() : available_memory_bytes();
-  if (estimate_resources(s.atoms, spheres).bytes > memory / 32) save_memory();
-  const SpherePlan plan = plan_spheres(s.atoms, spheres);
-  if (!silent) text << format_read_report(s.report) << format_sphere_plan(plan, spheres);
-  flush_standard_output();  // shown before the long work, and a broken standard output stops it
+  bool large_job = read_here && estimate_resources(whole, spheres).bytes > memory / 32;
+  if (launch) large_job = !launch->broadcast(large_job ? "large" : "").empty();
+  if (large_job) save_memory();
+  if (read_here) {
+    const SpherePlan plan = plan_spheres(whole, spheres);
+    if (!silent) text << format_read_report(read_here->report) << format_sphere_plan(plan, spheres);
+    flush_standard_output();  // shown before the long work, and a broken standard output stops it
+  }
+
+  blocks::BlockedSurfaceOptions blocked;
+  blocked.blocks = block_count;
+  blocked.exchange = exchange;
+  blocked.streamed = pieces;
+  blocks::BlockShare share;
+  if (launch) {
+    share = blocks::share_blocks(whole, compute_options(), blocked);
+    blocked.share = &share;
+  }
+  // The atoms this process's files name: the whole structure, or its share (tagged by
+  // their index in the whole).
+  const std::span<const Atom> named = read_here ? whole : std::span<const Atom>(share.atoms);
 
   // All or nothing: every file is complete before any replaces an old one (the pieces go to
   // their temporaries as they are made; under MPI each process keeps its own pieces' files,
   // and replaces them once the first has found the whole surface valid).
   OutputFiles files;
   const SurfaceFileOptions file{.ascii = ascii, .msms_header = !no_header, .threads = threads};
-  const MeshWriteOptions piece_options = surface_write_options(kind(), spheres, s.atoms, structure, file);
+  MeshWriteOptions piece_options = surface_write_options(kind(), spheres, named, structure, file);
+  if (!read_here) piece_options.atom_tags = share.global_index;
   bool with_seams = false;
-  blocks::BlockedSurfaceOptions blocked;
-  blocked.blocks = block_count;
-  blocked.exchange = exchange;
   if (pieces) {
-    blocked.streamed = true;
     blocked.piece_done = [&](std::size_t block, const Mesh& piece) {
       files.add_mesh(blocks::piece_path(out, block), piece, piece_options);
     };
@@ -254,12 +279,13 @@ int SurfaceCommand::run() const {
     };
   }
   std::optional<ComputedSurface> surface_or_none =
-      block_count > 0 ? compute_blocks_with_progress(s.atoms, compute_options(), blocked, quiet, progress, out)
-                      : compute_with_progress(s.atoms, compute_options(), quiet, progress, out);
+      block_count > 0 ? compute_blocks_with_progress(whole, compute_options(), blocked, quiet, progress, out)
+                      : compute_with_progress(whole, compute_options(), quiet, progress, out);
   if (!surface_or_none) {  // another process of the launch writes the index and the reports
     files.commit();
     return 0;
   }
+  const Structure& s = *read_here;
   const ComputedSurface& computed = *surface_or_none;
   const Mesh& surface = computed.mesh;
   report.seconds.surface = computed.seconds.union_;

@@ -64,12 +64,29 @@ void check_writable(const path& file, const Mesh& mesh, const MeshWriteOptions& 
     fail(file, "cannot write: " + std::to_string(mesh.face_tags.size()) + " face tags for " +
                    std::to_string(mesh.face_count()) + " faces");
   if (options.atoms.empty()) return;
+  if (!options.atom_tags.empty()) {
+    const MeshFormat format = mesh_format_from_path(file);
+    if (format != MeshFormat::vtp && format != MeshFormat::vtk)
+      fail(file, "cannot write: atoms tagged by their index in a larger structure go to .vtp and .vtk only");
+    if (options.atom_tags.size() != options.atoms.size())
+      fail(file, "cannot write: " + std::to_string(options.atom_tags.size()) + " atom tags for " +
+                     std::to_string(options.atoms.size()) + " atoms");
+  }
   for (std::size_t f = 0; f < mesh.face_tags.size(); ++f) {
     const std::int32_t tag = mesh.face_tags[f];
-    if (tag != kNoTag && (tag < 0 || static_cast<std::size_t>(tag) >= options.atoms.size()))
+    if (tag != kNoTag && tagged_atom(options, tag) == nullptr)
       fail(file, "cannot write: face " + std::to_string(f) + " has tag " + std::to_string(tag) +
                      ", not an index into the " + std::to_string(options.atoms.size()) + " atoms");
   }
+}
+
+const Atom* tagged_atom(const MeshWriteOptions& options, std::int32_t tag) {
+  if (tag < 0) return nullptr;
+  const auto t = static_cast<std::uint32_t>(tag);
+  if (options.atom_tags.empty()) return t < options.atoms.size() ? &options.atoms[t] : nullptr;
+  const auto it = std::lower_bound(options.atom_tags.begin(), options.atom_tags.end(), t);
+  if (it == options.atom_tags.end() || *it != t) return nullptr;
+  return &options.atoms[static_cast<std::size_t>(it - options.atom_tags.begin())];
 }
 
 std::string read_file_bytes(const path& file) {

@@ -62,6 +62,9 @@ Mesh read_pvtp(const path& file);
 // Throws unless every index is a vertex, tags are absent or one per face, and (when
 // atoms are given) every tag is kNoTag or an atom index: writers index with them.
 void check_writable(const path& file, const Mesh& mesh, const MeshWriteOptions& options);
+// The atom face tag `tag` names under options.atoms (and atom_tags); null for kNoTag or a
+// tag no atom has.
+const Atom* tagged_atom(const MeshWriteOptions& options, std::int32_t tag);
 
 // The whole file as bytes; throws "FILE: cannot read: REASON".
 std::string read_file_bytes(const path& file);

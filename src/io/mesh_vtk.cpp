@@ -106,11 +106,11 @@ void write_vtk(AtomicFileSet& files, const path& file, const Mesh& mesh, const M
     output.write("tag 1 " + count + " int\n");
     output.write(big_endian_values<std::int32_t>(faces, [&](std::size_t f) { return mesh.face_tags[f]; }));
     if (!options.atoms.empty()) {
-      // check_writable guarantees every tag is kNoTag or an atom index.
+      // check_writable guarantees every tag is kNoTag or an atom's.
       const Atom none{};  // for kNoTag: serial and residue number 0, empty names
       const auto atom_of = [&](std::size_t f) -> const Atom& {
-        const std::int32_t tag = mesh.face_tags[f];
-        return tag >= 0 ? options.atoms[static_cast<std::size_t>(tag)] : none;
+        const Atom* atom = tagged_atom(options, mesh.face_tags[f]);
+        return atom != nullptr ? *atom : none;
       };
       output.write("atom_serial 1 " + count + " int\n");
       output.write(big_endian_values<std::int32_t>(faces, [&](std::size_t f) { return atom_of(f).serial; }));

@@ -190,11 +190,11 @@ void write_vtp(AtomicFileSet& files, const path& file, const Mesh& mesh, const M
     cell_data.push_back(
         numeric_array("Int32", "tag", 1, bytes_of<std::int32_t>(faces, [&](std::size_t f) { return mesh.face_tags[f]; })));
     if (!options.atoms.empty()) {
-      // check_writable guarantees every tag is kNoTag or an atom index.
+      // check_writable guarantees every tag is kNoTag or an atom's.
       const Atom none{};  // for kNoTag: serial and residue number 0, empty names
       const auto atom_of = [&](std::size_t f) -> const Atom& {
-        const std::int32_t tag = mesh.face_tags[f];
-        return tag >= 0 ? options.atoms[static_cast<std::size_t>(tag)] : none;
+        const Atom* atom = tagged_atom(options, mesh.face_tags[f]);
+        return atom != nullptr ? *atom : none;
       };
       cell_data.push_back(numeric_array("Int32", "atom_serial", 1,
                                         bytes_of<std::int32_t>(faces, [&](std::size_t f) { return atom_of(f).serial; })));

@@ -40,28 +40,17 @@ class MpiExchange final : public blocks::BlockExchange {
   std::vector<std::string> gather(const std::string& bytes) override {
     std::vector<std::string> all;
     if (rank_ != 0) {
-      const std::uint64_t n = bytes.size();
-      check(MPI_Send(&n, 1, MPI_UINT64_T, 0, 0, MPI_COMM_WORLD), "MPI_Send");
-      for (std::size_t at = 0; at < bytes.size(); at += kPart)
-        check(MPI_Send(bytes.data() + at, static_cast<int>(std::min(kPart, bytes.size() - at)), MPI_BYTE, 0, 1,
-                       MPI_COMM_WORLD),
-              "MPI_Send");
+      send_bytes(0, bytes);
       return all;
     }
     all.resize(static_cast<std::size_t>(size_));
     all[0] = bytes;
-    for (int r = 1; r < size_; ++r) {
-      std::uint64_t n = 0;
-      check(MPI_Recv(&n, 1, MPI_UINT64_T, r, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
-      std::string& in = all[static_cast<std::size_t>(r)];
-      in.resize(n);
-      for (std::size_t at = 0; at < n; at += kPart)
-        check(MPI_Recv(in.data() + at, static_cast<int>(std::min<std::size_t>(kPart, n - at)), MPI_BYTE, r, 1,
-                       MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-              "MPI_Recv");
-    }
+    for (int r = 1; r < size_; ++r) all[static_cast<std::size_t>(r)] = receive_bytes(r);
     return all;
   }
+
+  void send(int to, const std::string& bytes) override { send_bytes(to, bytes); }
+  std::string receive() override { return receive_bytes(0); }
 
   std::string broadcast(const std::string& bytes) override {
     std::uint64_t n = bytes.size();
@@ -75,6 +64,26 @@ class MpiExchange final : public blocks::BlockExchange {
   }
 
  private:
+  void send_bytes(int to, const std::string& bytes) {
+    const std::uint64_t n = bytes.size();
+    check(MPI_Send(&n, 1, MPI_UINT64_T, to, 0, MPI_COMM_WORLD), "MPI_Send");
+    for (std::size_t at = 0; at < bytes.size(); at += kPart)
+      check(MPI_Send(bytes.data() + at, static_cast<int>(std::min(kPart, bytes.size() - at)), MPI_BYTE, to, 1,
+                     MPI_COMM_WORLD),
+            "MPI_Send");
+  }
+
+  std::string receive_bytes(int from) {
+    std::uint64_t n = 0;
+    check(MPI_Recv(&n, 1, MPI_UINT64_T, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+    std::string in(n, '\0');
+    for (std::size_t at = 0; at < n; at += kPart)
+      check(MPI_Recv(in.data() + at, static_cast<int>(std::min<std::size_t>(kPart, n - at)), MPI_BYTE, from, 1,
+                     MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+            "MPI_Recv");
+    return in;
+  }
+
   int rank_ = 0, size_ = 1;
 };
 
