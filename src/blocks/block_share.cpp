@@ -63,14 +63,6 @@ Atom get_atom(ByteReader& in) {
   return a;
 }
 
-BoundingBox grown_sphere_box(const Atom& atom, const SphereOptions& spheres, double reach) {
-  const double r = sphere_radius(atom, spheres) + reach;
-  BoundingBox box;
-  box.extend(atom.centre - Vec3{r, r, r});
-  box.extend(atom.centre + Vec3{r, r, r});
-  return box;
-}
-
 }  // namespace
 
 BlockShare share_of_process(std::span<const Atom> atoms, const BlockPartition& partition, const SphereOptions& spheres,
@@ -99,9 +91,9 @@ BlockShare share_of_process(std::span<const Atom> atoms, const BlockPartition& p
   for (std::size_t b : share.blocks) {
     for (std::uint32_t i : partition.atoms[b]) {
       needed[i] = 1;
-      const BoundingBox box = grown_sphere_box(atoms[i], spheres, reach);
+      const BoundingBox box = sphere_box(atoms[i], spheres, reach);
       grid.for_each_near(centres[i], [&](std::uint32_t j) {
-        if (!needed[j] && partition.block_of[j] != b && grown_sphere_box(atoms[j], spheres, reach).overlaps(box))
+        if (!needed[j] && partition.block_of[j] != b && sphere_box(atoms[j], spheres, reach).overlaps(box))
           needed[j] = 1;
       });
     }

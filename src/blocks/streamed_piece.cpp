@@ -45,14 +45,6 @@ Mesh faces_marked(const Mesh& mesh, std::span<const std::uint8_t> keep) {
   return out;
 }
 
-BoundingBox sphere_box(const Atom& atom, const SphereOptions& spheres, double reach) {
-  const double r = sphere_radius(atom, spheres) + reach;
-  BoundingBox box;
-  box.extend(atom.centre - Vec3{r, r, r});
-  box.extend(atom.centre + Vec3{r, r, r});
-  return box;
-}
-
 // The boxes of some atoms' spheres grown by border_reach, found by place.
 class AtomBoxGrid {
  public:
@@ -96,6 +88,14 @@ class AtomBoxGrid {
 std::uint64_t edge_key(Index a, Index b) { return (static_cast<std::uint64_t>(a) << 32) | b; }
 
 }  // namespace
+
+BoundingBox sphere_box(const Atom& atom, const SphereOptions& spheres, double reach) {
+  const double r = sphere_radius(atom, spheres) + reach;
+  BoundingBox box;
+  box.extend(atom.centre - Vec3{r, r, r});
+  box.extend(atom.centre + Vec3{r, r, r});
+  return box;
+}
 
 double six_volume_about(const Mesh& mesh, std::size_t face, const Vec3& origin) {
   const Triangle& t = mesh.faces[face];

@@ -34,6 +34,9 @@ inline constexpr int kBandRings = kSeamCleanupBand + 1;
 // and one and a half times the edge length the density asks for (1.1 / sqrt(density) A).
 double border_reach(const SphereOptions& spheres);
 
+// The box of an atom's sphere (radius + probe), grown by `reach` on every side.
+BoundingBox sphere_box(const Atom& atom, const SphereOptions& spheres, double reach);
+
 struct AtomArea {
   std::uint32_t atom = 0;
   double area = 0;
