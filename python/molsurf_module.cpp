@@ -491,11 +491,11 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     data->computed = molsurf::compute_surface(data->structure->atoms, options);
     // The true spheres' numbers, as the command's report and CSV tables give them.
     if (options.surface == molsurf::SurfaceKind::ses) {
-      // As the command's report: the SES's area and volume are the facets' (its patches' in
-      // ses_patches), its per-atom areas the patches'.
-      const molsurf::SurfaceMeasures& m = data->computed.measures;
-      data->exact.area = m.area;
-      data->exact.volume = m.volume;
+      // As the command's report: the SES's area, volume and per-atom areas are its patches'
+      // (exact), the facets' in facet_area and facet_volume.
+      const molsurf::ComputedSurface& c = data->computed;
+      data->exact.area = c.ses_patches ? c.ses_patches->area : c.measures.area;
+      data->exact.volume = c.ses_patches ? c.ses_patches->volume : c.measures.volume;
     } else {
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
     }
@@ -1177,11 +1177,12 @@ PYBIND11_MODULE(molsurf, m) {
           "area", [](const PySurface& s) { return s.data->exact.area; },
           "Total area of the true spheres' union, A^2, exact to rounding (not the facets'; see\n"
           "facet_area): the outer surface and the cavities, or with outer_only the outer surface only.\n"
-          "The command's report 'area'.")
+          "For surface='ses' the SES's, from its patches (ses_patches['area']). The command's report 'area'.")
       .def_property_readonly(
           "volume", [](const PySurface& s) { return s.data->exact.volume; },
           "Volume of the true spheres' union, A^3, exact to rounding: inside the outer surface minus the\n"
-          "cavities (with outer_only: inside the outer surface). The command's report 'volume'.")
+          "cavities (with outer_only: inside the outer surface); for surface='ses' the SES's, from its\n"
+          "patches. The command's report 'volume'.")
       .def_property_readonly(
           "facet_area", [](const PySurface& s) { return s.data->computed.measures.area; },
           "Total area of the mesh's facets, A^2 (all of its components). The report's 'facet_area'.")

@@ -284,6 +284,9 @@ TEST(CliAreas, SesPerAtomResidueAndChainAreasAreItsPatches) {
   const nlohmann::json report = nlohmann::json::parse(read_text(dir.path() / "r.json"));
   const double patches = report.at("ses_patches").at("area").get<double>();
   const double facets = report.at("facet_area").get<double>();
+  // The report's area and volume are the patches', as the SAS's are its true spheres'.
+  EXPECT_EQ(report.at("area").get<double>(), patches);
+  EXPECT_EQ(report.at("volume").get<double>(), report.at("ses_patches").at("volume").get<double>());
   const std::vector<double> atoms = last_column(read_text(dir.path() / "a.csv"));
   ASSERT_EQ(atoms.size(), 327u);
   const auto sum = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); };
@@ -320,10 +323,13 @@ TEST(CliAreas, SesPerAtomResidueAndChainAreasAreItsPatches) {
   EXPECT_NEAR(sum(last_column(read_text(dir.path() / "oc.csv"))), outer_patches, 1e-9 * outer_patches);
 
   // --all-models: each model's rows the same patches' areas.
-  const auto models = run_molsurf("-q --surface ses --all-models -o 'm_{model}.vtp' --per-atom m.csv " + file,
-                                  dir.path());
+  const auto models = run_molsurf(
+      "-q --surface ses --all-models -o 'm_{model}.vtp' --per-atom m.csv --json m.json " + file, dir.path());
   ASSERT_EQ(models.exit_code, 0) << models.err;
   EXPECT_EQ(last_column(read_text(dir.path() / "m.csv")), atoms);
+  const nlohmann::json model_rows = nlohmann::json::parse(read_text(dir.path() / "m.json")).at("models");
+  ASSERT_EQ(model_rows.size(), 1u);
+  EXPECT_EQ(model_rows[0].at("area").get<double>(), patches);
 }
 
 // FreeSASA's spellings: --radii names a built-in set, --config-file reads a FreeSASA

@@ -111,8 +111,8 @@ struct SurfaceReport {
   std::vector<double> atom_area;
   std::vector<ModelReport> models;  // --all-models: every model's numbers (the rest is the first's)
   std::optional<SternReport> stern;  // --stern
-  // The SES: its area and volume from the arrangement's patches (ses_measures.hpp), beside
-  // the facets' area and volume above.
+  // The SES: its area and volume from the arrangement's patches (ses_measures.hpp), the
+  // report's area and volume (exact, as the true spheres' are for the SAS); the facets' above.
   std::optional<SesMeasures> ses_patches;
 };
 

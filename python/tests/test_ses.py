@@ -13,8 +13,10 @@ def test_one_atom_ses_is_its_van_der_waals_sphere():
     s = molsurf.surface(centres=np.array([[0.0, 0.0, 0.0]]), radii=np.array([1.7]), surface="ses")
     assert s.check.valid
     assert abs(s.area - 4 * math.pi * 1.7**2) / (4 * math.pi * 1.7**2) < 0.005
-    # area is the facets' (the patches' is ses_patches["area"]).
-    assert s.area == s.facet_area
+    # area is the patches' (exact: the sphere's), facet_area the mesh's.
+    assert s.area == s.ses_patches["area"] and s.volume == s.ses_patches["volume"]
+    assert s.area == pytest.approx(4 * math.pi * 1.7**2, rel=1e-9)
+    assert s.area != s.facet_area
 
 
 def test_ses_lies_between_vdw_and_sas(tmp_path):
@@ -77,9 +79,11 @@ def test_ses_patches_give_its_area_and_volume_beside_the_facets():
     # Three equal atoms: equal shares, up to where the cells fall on the borders between
     # atoms' shares of a saddle or probe cap (cells are halved where the SES ends, not there).
     assert np.allclose(m["atom_area"], m["atom_area"][0], rtol=3e-3)
-    # The facets at density 2 within half a percent of the patches.
-    assert s.area == pytest.approx(m["area"], rel=5e-3)
-    assert s.volume == pytest.approx(m["volume"], rel=5e-3)
+    # The report's area and volume are the patches'; the facets' at density 2 within half a
+    # percent of them.
+    assert (s.area, s.volume) == (m["area"], m["volume"])
+    assert s.facet_area == pytest.approx(m["area"], rel=5e-3)
+    assert s.facet_volume == pytest.approx(m["volume"], rel=5e-3)
     assert molsurf.surface(centres=centres, radii=radii).ses_patches is None
 
 

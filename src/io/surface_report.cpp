@@ -198,16 +198,19 @@ std::string format_surface_report(const SurfaceReport& r) {
   if (r.exact) {
     row("area", fixed(r.exact->area, 2) + " A^2 (true spheres; the facets: " + fixed(r.area, 2) + " A^2)");
     row("volume", fixed(r.exact->volume, 2) + " A^3 (true spheres; the facets: " + fixed(r.volume, 2) + " A^3)");
+  } else if (r.ses_patches) {
+    // As the SAS's true spheres: the exact numbers first, which the per-atom areas add up to.
+    const SesMeasures& m = *r.ses_patches;
+    row("area", fixed(m.area, 2) + " A^2 (its patches: contact " + fixed(m.contact_area, 2) + ", toroidal " +
+                    fixed(m.toroidal_area, 2) + ", reentrant " + fixed(m.reentrant_area, 2) +
+                    "; the facets: " + fixed(r.area, 2) + " A^2)");
+    row("volume", fixed(m.volume, 2) + " A^3 (its patches, inside the outer surface minus cavities; the facets: " +
+                      fixed(r.volume, 2) + " A^3)");
   } else {
     row("area", fixed(r.area, 2) + " A^2");
     row("volume", fixed(r.volume, 2) + " A^3 (inside the outer surface, minus cavities)");
   }
   if (r.exact) format_shells(r, row);
-  if (r.ses_patches)
-    row("from its patches", fixed(r.ses_patches->area, 2) + " A^2 (contact " + fixed(r.ses_patches->contact_area, 2) +
-                                ", toroidal " + fixed(r.ses_patches->toroidal_area, 2) + ", reentrant " +
-                                fixed(r.ses_patches->reentrant_area, 2) + "), " + fixed(r.ses_patches->volume, 2) +
-                                " A^3 (the SES of the true spheres, docs/ses.md)");
   if (r.stern)
     row("stern layer", r.stern->output.string() + " (solvent-accessible at probe " + fixed(r.stern->probe, 2) +
                            " A, " + std::to_string(r.stern->faces) + " faces): area " + fixed(r.stern->area, 2) +
@@ -358,7 +361,10 @@ std::string surface_report_json(const SurfaceReport& r) {
   }
   j.field("output", r.output.string()).field("outer_only", r.outer_only);
   j.field("faces", r.faces).field("vertices", r.vertices);
-  if (!r.exact) j.field("area", r.area).field("volume", r.volume);
+  // area and volume: the exact ones where there are (the true spheres' above, or the SES's
+  // patches'), the facets' otherwise; facet_area and facet_volume: always the mesh's.
+  if (!r.exact && r.ses_patches) j.field("area", r.ses_patches->area).field("volume", r.ses_patches->volume);
+  else if (!r.exact) j.field("area", r.area).field("volume", r.volume);
   j.field("facet_area", r.area).field("facet_volume", r.volume);
   if (r.ses_patches) {
     const SesMeasures& m = *r.ses_patches;
