@@ -152,14 +152,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   seams.reserve(partition.size());
   Quality before;
   for (PieceMessage& m : messages) {
-    combine_quality(before, m.before);
-    if (options.cleanup) {
-      add_cleanup(result, m.cleanup);
-      result.cleanup->area_before += m.cleanup.area_before;
-    }
-    result.seconds.union_ += m.seconds_union;
-    result.seconds.cleanup += m.seconds_cleanup;
-    result.seconds.check += m.seconds_check;
+    add_piece_totals(result, before, m, options.cleanup);
     out.blocks.push_back(m.stats);
     pieces.push_back(std::move(m.mesh));
     seams.push_back(std::move(m.seam));

@@ -45,4 +45,18 @@ void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned);
 // The quality of two meshes together, from each one's.
 void combine_quality(Quality& total, const Quality& part);
 
+// One piece's quality before cleanup, cleanup counts and times added to the whole surface's
+// (a PieceMessage, glued, or a StreamedPiece).
+template <class Piece>
+void add_piece_totals(ComputedSurface& result, Quality& before, const Piece& piece, bool cleanup) {
+  combine_quality(before, piece.before);
+  if (cleanup) {
+    add_cleanup(result, piece.cleanup);
+    result.cleanup->area_before += piece.cleanup.area_before;
+  }
+  result.seconds.union_ += piece.seconds_union;
+  result.seconds.cleanup += piece.seconds_cleanup;
+  result.seconds.check += piece.seconds_check;
+}
+
 }  // namespace molsurf::blocks

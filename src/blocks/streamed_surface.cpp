@@ -280,14 +280,7 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Block
     if (pieces.size() != blocks) throw std::logic_error("compute_streamed_surface: a block without its piece");
     Quality before;
     for (const StreamedPiece& p : pieces) {
-      combine_quality(before, p.before);
-      if (options.cleanup) {
-        add_cleanup(result, p.cleanup);
-        result.cleanup->area_before += p.cleanup.area_before;
-      }
-      result.seconds.union_ += p.seconds_union;
-      result.seconds.cleanup += p.seconds_cleanup;
-      result.seconds.check += p.seconds_check;
+      add_piece_totals(result, before, p, options.cleanup);
       BlockStats stats = p.stats;
       stats.faces = p.faces;
       out.blocks.push_back(stats);
