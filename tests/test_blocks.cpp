@@ -280,6 +280,37 @@ TEST(StreamedBlocks, UncleanedPiecesAndSeamsAreTheWholeUnion) {
   }
 }
 
+// Two crambins 1e6 A apart, one per block, uncleaned (so the pieces are the one-process
+// union face for face). The streamed job sums volumes about its origin between them, 5e5 A
+// from each, where a component's volume carries a rounding of about 1e-8 of itself (1e-4
+// A^3 on crambin's); one process measures each component about its own vertex with an
+// exact sign. A component closed within one piece is now measured as one process measures
+// it: the same outer surfaces and cavities, and the same volumes.
+TEST(StreamedBlocks, ComponentsFarFromTheOriginAreMeasuredAsOneProcessMeasuresThem) {
+  const Structure s = read_structure(kData + "/pdb/1crn.pdb");
+  std::vector<Atom> atoms = s.atoms;
+  for (const Atom& a : s.atoms) {
+    Atom copy = a;
+    copy.centre = copy.centre + Vec3{1e6, 3e5, -2e5};
+    atoms.push_back(copy);
+  }
+  ComputeSurfaceOptions options;
+  options.cleanup = false;
+  options.exact_areas = false;
+  const ComputedSurface whole = compute_surface(atoms, options);
+  const std::vector<ComponentMeasure>& expected = whole.measures.components;
+  ASSERT_EQ(expected.size(), 4u);
+  const StreamedOutput out = streamed_blocks(atoms, options, 2);
+  const std::vector<ComponentMeasure>& streamed = out.surface.surface.measures.components;
+  ASSERT_EQ(streamed.size(), expected.size());
+  for (std::size_t c = 0; c < expected.size(); ++c) {
+    EXPECT_EQ(streamed[c].cavity(), expected[c].cavity()) << "component " << c;
+    EXPECT_EQ(streamed[c].faces, expected[c].faces) << "component " << c;
+    EXPECT_NEAR(streamed[c].volume, expected[c].volume, 1e-11 * std::fabs(expected[c].volume)) << "component " << c;
+  }
+  EXPECT_NEAR(out.surface.surface.measures.volume, whole.measures.volume, 1e-11 * whole.measures.volume);
+}
+
 // After cleanup: the pieces and seams read as one surface are valid, and are what the
 // merged report describes; against the glued job (which holds the whole surface), the
 // facets' area and volume within 1e-4, the same components (cavities spanning blocks

@@ -23,6 +23,11 @@ struct ComponentMeasure {
 // Components by shared vertices; the largest outer surface first, then by area.
 std::vector<ComponentMeasure> measure_components(const Mesh& mesh);
 
+// The volume the components enclose: the outer surfaces' less the cavities', each measured
+// about its own vertex, where rounding stays in proportion to the component (the whole
+// mesh's signed volume about its box centre loses 1e-3 of two crambins 1e6 A apart).
+double enclosed_volume(std::span<const ComponentMeasure> components);
+
 // Each of the mesh's components (in measure_components' order) matched to the shell of the
 // arrangement it follows: the shell that most of its area's atoms line, each face voting
 // with its area for its atom's shell when the atom lines one shell only; -1 when no face

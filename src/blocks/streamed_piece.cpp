@@ -5,6 +5,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "mesh/component_volume.hpp"
+#include "mesh/topology.hpp"
+
 namespace molsurf::blocks {
 
 namespace {
@@ -236,7 +239,13 @@ SplitPiece split_piece(PieceMessage&& piece, const HeldAtoms& held, const Sphere
         p.joints.push_back(w.vertices[v]);
       }
   }
-  for (WrittenPart& p : kept.parts) {
+  // A part no band face touches is a closed component on its own: measured about its own
+  // vertex with an exact sign, as one process measures it (far from the job's origin a
+  // speck's volume is mostly rounding there, and its sign decides cavity or outer surface).
+  const ComponentVolumes own = component_volumes(w, parts);
+  for (std::size_t c = 0; c < kept.parts.size(); ++c) {
+    WrittenPart& p = kept.parts[c];
+    if (p.joints.empty()) p.volume = own.volume[c];
     std::sort(p.atoms.begin(), p.atoms.end());
     p.atoms.erase(std::unique(p.atoms.begin(), p.atoms.end()), p.atoms.end());
   }

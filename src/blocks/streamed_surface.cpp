@@ -17,6 +17,7 @@
 #include "blocks/seam.hpp"
 #include "blocks/pieces_of_all_blocks.hpp"
 #include "blocks/streamed_piece.hpp"
+#include "mesh/component_volume.hpp"
 #include "mesh/topology.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
@@ -176,6 +177,13 @@ void merge_measures(const Mesh& seams, std::span<const StreamedPiece> pieces, st
       }
     }
   }
+  // A band component that no written part joins is closed on its own: its volume about its
+  // own vertex with an exact sign, as a part's (streamed_piece.cpp) and one process's.
+  const ComponentVolumes band_own = component_volumes(seams, band);
+  std::vector<std::uint32_t> nodes_of_root(parts, 0);
+  for (std::uint32_t k = 0; k < parts; ++k) ++nodes_of_root[root_of(parent, k)];
+  for (std::uint32_t k = 0; k < band.count; ++k)
+    if (nodes_of_root[root_of(parent, k)] == 1) node[k].volume = band_own.volume[k];
   // Components in order of their first part, then reported as measure_components orders them.
   std::vector<std::int64_t> component_of_root(parts, -1);
   std::vector<ComponentMeasure> components;

@@ -19,8 +19,8 @@ SurfaceReport make_surface_report(const Mesh& surface, const MeshCheck& check) {
   r.faces = surface.faces.size();
   r.vertices = surface.vertices.size();
   r.area = check.area;
-  r.volume = check.volume;
   r.components = measure_components(surface);
+  r.volume = enclosed_volume(r.components);
   r.quality = check.quality;
   r.valid = check.valid();
   r.defects = check.defects();

@@ -199,6 +199,7 @@ SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::s
   } else {
     m.components = measure_components(mesh);
   }
+  m.volume = enclosed_volume(m.components);  // as the streamed blocks add theirs
   m.quality = check.quality;
   m.atom_area = area_per_atom(mesh, atom_count);
   return m;

@@ -46,6 +46,12 @@ MeasuredComponents measured_components(const Mesh& mesh) {
 
 }  // namespace
 
+double enclosed_volume(std::span<const ComponentMeasure> components) {
+  double volume = 0;
+  for (const ComponentMeasure& c : components) volume += c.volume;
+  return volume;
+}
+
 std::vector<ComponentMeasure> measure_components(const Mesh& mesh) {
   const MeasuredComponents m = measured_components(mesh);
   std::vector<ComponentMeasure> out;
