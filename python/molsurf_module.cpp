@@ -493,9 +493,9 @@ PySurface surface_py(py::object structure, py::object centres, py::object radii,
     if (options.surface == molsurf::SurfaceKind::ses) {
       // As the command's report: the SES's area, volume and per-atom areas are its patches'
       // (exact), the facets' in facet_area and facet_volume.
-      const molsurf::ComputedSurface& c = data->computed;
-      data->exact.area = c.ses_patches ? c.ses_patches->area : c.measures.area;
-      data->exact.volume = c.ses_patches ? c.ses_patches->volume : c.measures.volume;
+      const molsurf::ReportedTotals totals = molsurf::reported_totals(data->computed, data->computed.measures);
+      data->exact.area = totals.area;
+      data->exact.volume = totals.volume;
     } else {
       data->exact = molsurf::make_exact_report(data->computed.exact, data->computed.component_shells, outer_only);
     }

@@ -25,4 +25,12 @@ inline std::vector<double> reported_atom_area(const ComputedSurface& computed, b
   return reported_atom_area(computed, outer_only, computed.measures);
 }
 
+// The total area and volume reported beside them when the run has no true spheres'
+// arrangement (the SES, or exact_areas off): the SES's patches' where computed, else the
+// facets' (`facets` as above). With the arrangement, make_exact_report gives them.
+struct ReportedTotals {
+  double area = 0, volume = 0;
+};
+ReportedTotals reported_totals(const ComputedSurface& computed, const SurfaceMeasures& facets);
+
 }  // namespace molsurf

@@ -444,8 +444,9 @@ int SurfaceCommand::run_model_meshes() const {
     a.seconds = computed.seconds.union_ + computed.seconds.cleanup + computed.seconds.check;
     a.atom_area = reported_atom_area(computed, outer_only, measures);
     if (computed.exact.area_per_sphere.empty()) {  // the SES: its patches' totals, the facets' cavities
-      a.area = computed.ses_patches ? computed.ses_patches->area : measures.area;
-      a.volume = computed.ses_patches ? computed.ses_patches->volume : measures.volume;
+      const ReportedTotals totals = reported_totals(computed, measures);
+      a.area = totals.area;
+      a.volume = totals.volume;
       for (const ComponentMeasure& c : measures.components) a.cavities += c.cavity();
     } else {
       const ExactReport exact = make_exact_report(computed.exact, {}, outer_only);

@@ -191,7 +191,6 @@ SurfaceMeasures measure_surface(const Mesh& mesh, const MeshCheck& check, std::s
   m.faces = mesh.face_count();
   m.vertices = mesh.vertex_count();
   m.area = check.area;
-  m.volume = check.volume;
   if (exact && component_shells) {
     MeshComponentsAndShells both = measure_components_and_shells(mesh, *exact);
     m.components = std::move(both.components);

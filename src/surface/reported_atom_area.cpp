@@ -11,4 +11,9 @@ std::vector<double> reported_atom_area(const ComputedSurface& computed, bool out
   return facets.atom_area;
 }
 
+ReportedTotals reported_totals(const ComputedSurface& computed, const SurfaceMeasures& facets) {
+  if (computed.ses_patches) return {computed.ses_patches->area, computed.ses_patches->volume};
+  return {facets.area, facets.volume};
+}
+
 }  // namespace molsurf
