@@ -41,7 +41,8 @@ std::optional<std::vector<Piece>> pieces_of_all_blocks(std::size_t blocks, Block
   } catch (const std::exception& e) {
     bytes = std::string("E") + e.what();
   }
-  const std::vector<std::string> gathered = exchange->gather(bytes);
+  std::vector<std::string> gathered = exchange->gather(bytes);
+  bytes = std::string{};
   if (exchange->rank() != 0) return std::nullopt;
   for (std::size_t k = 0; k < gathered.size(); ++k) {
     const std::string_view b = gathered[k];
@@ -49,6 +50,8 @@ std::optional<std::vector<Piece>> pieces_of_all_blocks(std::size_t blocks, Block
       throw Error("process " + std::to_string(k) + " of " + std::to_string(gathered.size()) + ": " +
                   std::string(b.empty() ? "no answer" : b.substr(1)));
     for (Piece& p : read(b.substr(1))) pieces.push_back(std::move(p));
+    // Each process's bytes go once read: the pieces and all their bytes never add up.
+    gathered[k] = std::string{};
   }
   std::sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) { return x.block < y.block; });
   made(blocks);

@@ -28,10 +28,14 @@ std::vector<std::uint8_t> rings_from_seam(const Mesh& mesh, int rings) {
   return ring;
 }
 
-// The faces `keep` marks, on their own vertices (in first use order), tags kept.
+// The faces `keep` marks, on their own vertices (in first use order), tags kept. Sized
+// exactly: the join holds every piece's band and border at once.
 Mesh faces_marked(const Mesh& mesh, std::span<const std::uint8_t> keep) {
   Mesh out;
   std::vector<Index> vertex_of(mesh.vertices.size(), ~Index{0});
+  const auto kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(), [](std::uint8_t k) { return k != 0; }));
+  out.faces.reserve(kept);
+  out.face_tags.reserve(kept);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     if (!keep[f]) continue;
     Triangle t = mesh.faces[f];
@@ -45,6 +49,7 @@ Mesh faces_marked(const Mesh& mesh, std::span<const std::uint8_t> keep) {
     out.faces.push_back(t);
     out.face_tags.push_back(mesh.tag(f));
   }
+  out.vertices.shrink_to_fit();
   return out;
 }
 

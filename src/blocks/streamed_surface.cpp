@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -55,11 +56,19 @@ std::uint32_t root_of(std::vector<std::uint32_t>& parent, std::uint32_t x) {
   return x;
 }
 
-// The seams' band glued and, with cleanup, cleaned with both sides in view: everything
-// beyond kSeamCleanupBand rings of the seams frozen, and every piece's border added
-// (frozen, on vertices of its own) so no edit crosses a written face.
-Mesh joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, const BlockPartition& partition,
-                  std::vector<StreamedPiece>& pieces, ComputedSurface& result) {
+// The seams' bands glued, and after them every piece's border, on vertices of its own and
+// tagged -2 - atom; with cleanup, cleaned with both sides in view: everything beyond
+// kSeamCleanupBand rings of the seams frozen, the borders too, so no edit crosses a written
+// face. The pieces' bands and borders are released as they are taken: the join holds each
+// face once.
+struct SeamsAndBorders {
+  Mesh mesh;
+  std::size_t band_faces = 0, band_vertices = 0;
+};
+
+SeamsAndBorders joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
+                             const BlockPartition& partition, std::vector<StreamedPiece>& pieces,
+                             ComputedSurface& result) {
   std::vector<Mesh> bands;
   std::vector<std::vector<SeamPoint>> seams;
   for (StreamedPiece& p : pieces) {
@@ -67,53 +76,120 @@ Mesh joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOptions& opti
     seams.push_back(std::move(p.seam));
   }
   std::vector<std::uint8_t> on_seam;
-  Mesh glued = glue_pieces(bands, seams, exact_same_point(atoms, options.spheres, partition.contained), &on_seam);
+  SeamsAndBorders out;
+  Mesh& glued = out.mesh;
+  glued = glue_pieces(bands, seams, exact_same_point(atoms, options.spheres, partition.contained), &on_seam);
   bands = {};
   seams = {};
-  if (!options.cleanup || glued.faces.empty()) return glued;
+  out.band_faces = glued.faces.size();
+  out.band_vertices = glued.vertices.size();
+  const bool clean = options.cleanup && out.band_faces > 0;
+  std::vector<std::uint8_t> frozen;
+  if (clean) frozen = frozen_beyond(glued, on_seam, kSeamCleanupBand);
+  on_seam = {};
+  std::size_t faces = out.band_faces, vertices = out.band_vertices;
+  for (const StreamedPiece& p : pieces) faces += p.border.faces.size(), vertices += p.border.vertices.size();
+  glued.faces.reserve(faces);
+  glued.face_tags.reserve(faces);
+  glued.vertices.reserve(vertices);
+  for (StreamedPiece& p : pieces) {
+    glued.append(p.border);
+    p.border = Mesh{};
+  }
+  // The borders' faces are told apart by their tags: none of them can change, as every
+  // vertex they have is frozen and no edge of theirs is shared with a band face.
+  for (std::size_t f = out.band_faces; f < glued.faces.size(); ++f) glued.face_tags[f] = -2 - glued.face_tags[f];
+  if (!clean) return out;
   const auto clock = Clock::now();
-  std::vector<std::uint8_t> frozen = frozen_beyond(glued, on_seam, kSeamCleanupBand);
-  const std::size_t band_faces = glued.faces.size();
-  for (const StreamedPiece& p : pieces) glued.append(p.border);
-  // The borders' faces are told apart by their tags (-2 - atom): none of them can change,
-  // as every vertex they have is frozen and no edge of theirs is shared with a band face.
-  for (std::size_t f = band_faces; f < glued.faces.size(); ++f) glued.face_tags[f] = -2 - glued.face_tags[f];
   frozen.resize(glued.vertices.size(), 1);
   CleanupOptions cleanup = options.cleanup_options;
   cleanup.measure_after = false;
   add_cleanup(result, improve_surface(glued, cleanup, frozen));
-  std::vector<std::uint8_t> band(glued.faces.size());
-  for (std::size_t f = 0; f < glued.faces.size(); ++f) band[f] = glued.face_tags[f] >= 0;
-  keep_alive_faces(glued, band);
-  drop_unused_vertices(glued);
   result.seconds.cleanup += seconds_since(clock);
-  return glued;
+  return out;
 }
 
-// The cleaned seams and every border, glued where they share vertices (by exact position),
-// checked as a piece is: its only boundary where the borders meet written faces left out.
-void check_seams(const Mesh& seams, std::span<const StreamedPiece> pieces, const ComputeSurfaceOptions& options,
-                 std::span<const Atom> atoms, const BlockPartition& partition) {
+// The seams alone: the band's faces (in order, on their vertices in order of first use once
+// cleaned, as they were glued otherwise).
+Mesh seams_of(const SeamsAndBorders& joined, bool cleaned) {
+  const Mesh& m = joined.mesh;
+  Mesh seams;
+  if (!cleaned) {
+    seams.vertices.assign(m.vertices.begin(), m.vertices.begin() + static_cast<std::ptrdiff_t>(joined.band_vertices));
+    seams.faces.assign(m.faces.begin(), m.faces.begin() + static_cast<std::ptrdiff_t>(joined.band_faces));
+    seams.face_tags.assign(m.face_tags.begin(), m.face_tags.begin() + static_cast<std::ptrdiff_t>(joined.band_faces));
+    return seams;
+  }
+  std::size_t faces = 0;
+  for (std::int32_t t : m.face_tags) faces += t >= 0;
+  std::vector<Index> vertex_of(m.vertices.size(), ~Index{0});
+  seams.faces.reserve(faces);
+  seams.face_tags.reserve(faces);
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (m.face_tags[f] < 0) continue;
+    Triangle t = m.faces[f];
+    for (Index& v : t) {
+      if (vertex_of[v] == ~Index{0}) {
+        vertex_of[v] = static_cast<Index>(seams.vertices.size());
+        seams.vertices.push_back(m.vertices[v]);
+      }
+      v = vertex_of[v];
+    }
+    seams.faces.push_back(t);
+    seams.face_tags.push_back(m.face_tags[f]);
+  }
+  seams.vertices.shrink_to_fit();
+  return seams;
+}
+
+// The cleaned seams and every border as one mesh, glued where their vertices lie at the same
+// exact position: each border vertex becomes the seams' vertex there, or the first border
+// vertex there. Vertices of the seams are never merged with one another (two at one place
+// are a contact the check must see). Tags become atoms again; unused vertices go.
+Mesh seams_with_borders(SeamsAndBorders&& joined) {
+  Mesh m = std::move(joined.mesh);
+  enum : std::uint8_t { unused = 0, seam = 1, border = 2 };
+  std::vector<std::uint8_t> role(m.vertices.size(), unused);
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (Index v : m.faces[f]) role[v] |= m.face_tags[f] >= 0 ? seam : border;
+  struct Entry {
+    PointKey key;
+    bool border;
+    Index vertex;
+    auto order() const { return std::tie(key.bits, border, vertex); }
+  };
+  std::vector<Entry> entries;
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    if (role[v] != unused) entries.push_back({key_of(m.vertices[v]), !(role[v] & seam), v});
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.order() < b.order(); });
+  std::vector<Index> vertex_of(m.vertices.size());
+  std::iota(vertex_of.begin(), vertex_of.end(), Index{0});
+  for (std::size_t i = 0, first = 0; i < entries.size(); ++i) {
+    if (entries[i].key != entries[first].key) first = i;
+    if (entries[i].border) vertex_of[entries[i].vertex] = entries[first].vertex;
+  }
+  entries = {};
+  role = {};
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (m.face_tags[f] >= 0) continue;
+    m.face_tags[f] = -2 - m.face_tags[f];
+    for (Index& v : m.faces[f]) v = vertex_of[v];
+  }
+  vertex_of = {};
+  drop_unused_vertices(m);
+  return m;
+}
+
+// The cleaned seams and every border glued (seams_with_borders), checked as a piece is: its
+// only boundary where the borders meet written faces left out.
+void check_seams(const Mesh& seams, Mesh&& together, std::span<const StreamedPiece> pieces,
+                 const ComputeSurfaceOptions& options, std::span<const Atom> atoms, const BlockPartition& partition) {
   const HeldAtoms whole{atoms, {}, partition.block_of, partition.contained};
-  Mesh together = seams;
-  std::unordered_map<PointKey, Index, PointHash> vertex_at;
-  for (Index v = 0; v < together.vertices.size(); ++v) vertex_at.emplace(key_of(together.vertices[v]), v);
   std::uint64_t open_edges = 0;
   double stray = 0;
   for (const StreamedPiece& p : pieces) {
     open_edges += p.border_open_edges;
     stray = std::max(stray, p.stray);
-    for (std::size_t f = 0; f < p.border.faces.size(); ++f) {
-      Triangle t = p.border.faces[f];
-      for (Index& v : t) {
-        const auto [it, added] =
-            vertex_at.try_emplace(key_of(p.border.vertices[v]), static_cast<Index>(together.vertices.size()));
-        if (added) together.vertices.push_back(p.border.vertices[v]);
-        v = it->second;
-      }
-      together.faces.push_back(t);
-      together.face_tags.push_back(p.border.tag(f));
-    }
   }
   for (std::size_t f = 0; f < seams.faces.size(); ++f) stray = std::max(stray, stray_of(seams, f, whole, options.spheres));
   if (const double reach = border_reach(options.spheres); stray > reach)
@@ -294,9 +370,10 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Block
       out.blocks.push_back(stats);
     }
     report(SurfaceStage::check, 0, 1);
-    const Mesh seams = joined_seams(atoms, options, *partition, pieces, result);
+    SeamsAndBorders joined = joined_seams(atoms, options, *partition, pieces, result);
+    const Mesh seams = seams_of(joined, options.cleanup && joined.band_faces > 0);
     auto clock = Clock::now();
-    check_seams(seams, pieces, options, atoms, *partition);
+    check_seams(seams, seams_with_borders(std::move(joined)), pieces, options, atoms, *partition);
     result.seconds.check += seconds_since(clock);
     report(SurfaceStage::check, 1, 1);
 

@@ -101,6 +101,10 @@ struct DistinctPoints {
 DistinctPoints distinct_points(std::span<const AtomPieces> pieces, std::span<const std::uint32_t> representative) {
   DistinctPoints distinct;
   distinct.point_of.resize(representative.size());
+  std::size_t count = 0;
+  for (std::size_t s = 0; s < representative.size(); ++s) count += representative[s] == s;
+  distinct.points.reserve(count);
+  distinct.coordinates.reserve(count);
   for (std::size_t i = 0, s = 0; i < pieces.size(); ++i)
     for (std::size_t k = 0; k < pieces[i].points.size(); ++k, ++s) {
       if (representative[s] == s) {

@@ -82,6 +82,11 @@ AtomPieces AtomTrimmer::trim(std::uint32_t atom) {
   }
   out.crossings = crossings_;
   for (const PointDefinition& d : out.points) out.implicit_points += !d.is_explicit();
+  // Every atom's pieces wait for the join together: grown by doubling, they would hold a
+  // quarter more than they use.
+  out.points.shrink_to_fit();
+  out.coordinates.shrink_to_fit();
+  out.triangles.shrink_to_fit();
   return out;
 }
 
