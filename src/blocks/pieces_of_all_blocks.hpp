@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "blocks/block_exchange.hpp"
+#include "blocks/spilled_bytes.hpp"
 #include "molsurf/error.hpp"
 
 namespace molsurf::blocks {
@@ -21,15 +22,30 @@ namespace molsurf::blocks {
 // reads back what append wrote; `made(done)` is told after each block made here. Returns the
 // pieces in block order on the first process (or on a process alone), nothing on the others.
 // A piece that failed on any process throws molsurf::Error on the first, naming the process.
+// With `on_disk`, a process alone keeps each piece as bytes in a temporary file until every
+// block is made, so that it never holds one block's work and the pieces before it at once.
 template <class Piece, class Make, class Append, class Read, class Made>
 std::optional<std::vector<Piece>> pieces_of_all_blocks(std::size_t blocks, BlockExchange* exchange, Make&& make,
-                                                       Append&& append, Read&& read, Made&& made) {
+                                                       Append&& append, Read&& read, Made&& made,
+                                                       bool on_disk = false) {
   std::vector<Piece> pieces;
   if (exchange == nullptr || exchange->size() <= 1) {
+    if (!on_disk) {
+      for (std::size_t b = 0; b < blocks; ++b) {
+        pieces.push_back(make(b));
+        made(b + 1);
+      }
+      return pieces;
+    }
+    SpilledBytes disk;
     for (std::size_t b = 0; b < blocks; ++b) {
-      pieces.push_back(make(b));
+      std::string bytes;
+      append(bytes, make(b));
+      disk.push(bytes);
       made(b + 1);
     }
+    for (std::size_t b = 0; b < blocks; ++b)
+      for (Piece& p : read(disk.read(b))) pieces.push_back(std::move(p));
     return pieces;
   }
   // What a process sends: "P" and its pieces, or "E" and what went wrong.

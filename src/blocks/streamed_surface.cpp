@@ -346,7 +346,7 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Block
     made = pieces_of_all_blocks<StreamedPiece>(
         blocks, exchange, make, append_streamed_piece,
         [](std::string_view bytes) { return read_streamed_pieces(bytes); },
-        [&](std::size_t done) { report(SurfaceStage::union_, done, blocks); });
+        [&](std::size_t done) { report(SurfaceStage::union_, done, blocks); }, /*on_disk=*/true);
   } catch (const std::exception& e) {
     if (shared && exchange->rank() == 0) exchange->broadcast(e.what());
     throw;
