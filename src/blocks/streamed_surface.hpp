@@ -8,8 +8,9 @@
 // with every border, and become one more piece. The report is merged from the summaries:
 // totals, per-atom areas, and the components joined through the band; the exact areas
 // from each block's arrangement of its own spheres (block_areas.hpp), made once the piece's
-// written faces are released. The peak memory is one piece's plus the bands and borders,
-// not the whole surface's, nor the whole structure's arrangement.
+// written faces are released. A process alone keeps each block's kept part on disk until
+// every block is made (spilled_bytes.hpp). The peak memory is one piece's, or the bands and
+// borders' at the join, not the whole surface's, nor the whole structure's arrangement.
 #include <span>
 
 #include "blocks/block_partition.hpp"
