@@ -22,6 +22,7 @@
 #include "blocks/streamed_piece.hpp"
 #include "blocks/streamed_surface.hpp"
 #include "common/thread_count_scope.hpp"
+#include "mesh/topology.hpp"
 #include "molsurf/error.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/parameters.hpp"
@@ -39,22 +40,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 // The faces of `mesh` whose atom lies in block `block`, on their own vertices.
 Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, std::size_t block) {
-  Mesh piece;
-  std::vector<Index> vertex_of(mesh.vertices.size(), ~Index{0});
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    if (block_of[static_cast<std::size_t>(mesh.face_tags[f])] != block) continue;
-    Triangle t = mesh.faces[f];
-    for (Index& v : t) {
-      if (vertex_of[v] == ~Index{0}) {
-        vertex_of[v] = static_cast<Index>(piece.vertices.size());
-        piece.vertices.push_back(mesh.vertices[v]);
-      }
-      v = vertex_of[v];
-    }
-    piece.faces.push_back(t);
-    piece.face_tags.push_back(mesh.face_tags[f]);
-  }
-  return piece;
+  return faces_where(mesh, [&](std::size_t f) { return block_of[static_cast<std::size_t>(mesh.face_tags[f])] == block; });
 }
 
 }  // namespace

@@ -28,29 +28,9 @@ std::vector<std::uint8_t> rings_from_seam(const Mesh& mesh, int rings) {
   return ring;
 }
 
-// The faces `keep` marks, on their own vertices (in first use order), tags kept. Sized
-// exactly: the join holds every piece's band and border at once.
+// The faces `keep` marks, on their own vertices (in first use order), tags kept.
 Mesh faces_marked(const Mesh& mesh, std::span<const std::uint8_t> keep) {
-  Mesh out;
-  std::vector<Index> vertex_of(mesh.vertices.size(), ~Index{0});
-  const auto kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(), [](std::uint8_t k) { return k != 0; }));
-  out.faces.reserve(kept);
-  out.face_tags.reserve(kept);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    if (!keep[f]) continue;
-    Triangle t = mesh.faces[f];
-    for (Index& v : t) {
-      if (vertex_of[v] == ~Index{0}) {
-        vertex_of[v] = static_cast<Index>(out.vertices.size());
-        out.vertices.push_back(mesh.vertices[v]);
-      }
-      v = vertex_of[v];
-    }
-    out.faces.push_back(t);
-    out.face_tags.push_back(mesh.tag(f));
-  }
-  out.vertices.shrink_to_fit();
-  return out;
+  return faces_where(mesh, [&](std::size_t f) { return keep[f] != 0; });
 }
 
 // The boxes of some atoms' spheres grown by border_reach, found by place.

@@ -120,26 +120,7 @@ Mesh seams_of(const SeamsAndBorders& joined, bool cleaned) {
     seams.face_tags.assign(m.face_tags.begin(), m.face_tags.begin() + static_cast<std::ptrdiff_t>(joined.band_faces));
     return seams;
   }
-  std::size_t faces = 0;
-  for (std::int32_t t : m.face_tags) faces += t >= 0;
-  std::vector<Index> vertex_of(m.vertices.size(), ~Index{0});
-  seams.faces.reserve(faces);
-  seams.face_tags.reserve(faces);
-  for (std::size_t f = 0; f < m.faces.size(); ++f) {
-    if (m.face_tags[f] < 0) continue;
-    Triangle t = m.faces[f];
-    for (Index& v : t) {
-      if (vertex_of[v] == ~Index{0}) {
-        vertex_of[v] = static_cast<Index>(seams.vertices.size());
-        seams.vertices.push_back(m.vertices[v]);
-      }
-      v = vertex_of[v];
-    }
-    seams.faces.push_back(t);
-    seams.face_tags.push_back(m.face_tags[f]);
-  }
-  seams.vertices.shrink_to_fit();
-  return seams;
+  return faces_where(m, [&](std::size_t f) { return m.face_tags[f] >= 0; });
 }
 
 // The cleaned seams and every border as one mesh, glued where their vertices lie at the same

@@ -120,6 +120,34 @@ void keep_alive_faces(Mesh& m, const std::vector<std::uint8_t>& alive, PerFace&.
   (per_face.resize(out), ...);
 }
 
+// The faces f with keep(f), in order, with their tags, on vertices of their own in order of
+// first use. Sized exactly: the blocks keep such meshes side by side.
+template <class Keep>
+Mesh faces_where(const Mesh& m, Keep&& keep) {
+  Mesh out;
+  std::size_t count = 0;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) count += keep(f) ? 1 : 0;
+  const bool tagged = m.has_tags();
+  out.faces.reserve(count);
+  if (tagged) out.face_tags.reserve(count);
+  std::vector<Index> vertex_of(m.vertices.size(), ~Index{0});
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (!keep(f)) continue;
+    Triangle t = m.faces[f];
+    for (Index& v : t) {
+      if (vertex_of[v] == ~Index{0}) {
+        vertex_of[v] = static_cast<Index>(out.vertices.size());
+        out.vertices.push_back(m.vertices[v]);
+      }
+      v = vertex_of[v];
+    }
+    out.faces.push_back(t);
+    if (tagged) out.face_tags.push_back(m.face_tags[f]);
+  }
+  out.vertices.shrink_to_fit();
+  return out;
+}
+
 // Renumbers the vertices in order of first use by the faces; unused ones go.
 inline void drop_unused_vertices(Mesh& m) {
   std::vector<Index> renumber(m.vertices.size(), ~Index{0});
