@@ -225,7 +225,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "Compute the surface in N spatial blocks balanced by atom count, one after another (each from\n"
                  "its atoms and the halo that reaches them); with -o NAME.pvtp each block's piece is written as\n"
                  "NAME_K.vtp as soon as it is made, the seams between them as NAME_seams.vtp, beside a ParaView\n"
-                 "index NAME.pvtp: the peak memory is then a block's, not the surface's (docs/scale-out.md)")
+                 "index NAME.pvtp: the peak memory is then a block's, or at the end the seams', not the\n"
+                 "surface's; what each block keeps for the seams waits in a temporary file in TMPDIR\n"
+                 "(docs/scale-out.md)")
       ->check(CLI::Range(1, 1 << 20));
   app.add_flag("--merge", merge, "With --blocks: write the blocks glued into one surface file (-o NAME.vtp, ...); the whole\n"
                "surface is then held at once, as with any output but .pvtp");
