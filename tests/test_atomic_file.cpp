@@ -328,6 +328,28 @@ TEST_F(AtomicFileTest, StaleTemporariesOfDeadProcessesAreRemoved) {
   EXPECT_EQ(entries(), before) << "the long name's stale temporary was not removed (one file added, one removed)";
 }
 
+// A set lists a directory once, at its first file there (a .pvtp of thousands of pieces
+// would read the directory once per piece), and still removes each of its targets' stale
+// temporaries, and only theirs.
+TEST_F(AtomicFileTest, ASetRemovesTheStaleTemporariesOfEachOfItsTargets) {
+  const pid_t dead = ::fork();
+  ASSERT_GE(dead, 0);
+  if (dead == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(dead, nullptr, 0), dead);
+  const std::string gone = std::to_string(dead);
+  std::vector<std::string> stale, kept;
+  for (int k = 0; k < 50; ++k) stale.push_back(".s_" + std::to_string(k) + ".vtp.tmp-" + gone + "-0");
+  kept.push_back(".s_50.vtp.tmp-" + gone + "-0");  // no file of the set
+  for (const std::string& name : stale) put(dir_ / name, "stale");
+  for (const std::string& name : kept) put(dir_ / name, "kept");
+  molsurf::AtomicFileSet set;
+  for (int k = 0; k < 50; ++k) set.add(dir_ / ("s_" + std::to_string(k) + ".vtp")).write("new");
+  set.commit();
+  for (const std::string& name : stale) EXPECT_FALSE(fs::exists(dir_ / name)) << name;
+  for (const std::string& name : kept) EXPECT_TRUE(fs::exists(dir_ / name)) << name;
+  EXPECT_EQ(entries(), 51u);
+}
+
 TEST_F(AtomicFileTest, RegistryForgetsCommittedAndRemovedTemporaries) {
   const int before = molsurf::detail::registered_temporaries();
   {

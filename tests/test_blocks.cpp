@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <tuple>
@@ -422,6 +424,38 @@ TEST(BlocksCommand, RefusesAVolumeMeshAroundStreamedPieces) {
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("--merge"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "s_0.vtp"));
+}
+
+// A block per atom at most: more would be empty pieces, each a file and a pass of its own
+// (a million blocks on one atom ran for hours, writing a million files), and 65 536 in all.
+TEST(BlocksCommand, RefusesMoreBlocksThanAtomsAndTakesTheIndexInAnyCase) {
+  testing::TempDir dir;
+  {
+    std::ofstream pdb(dir.path() / "three.pdb");
+    pdb << "ATOM      1  N   ALA A   1       0.000   0.000   0.000  1.00  0.00           N\n"
+           "ATOM      2  CA  ALA A   1       1.450   0.000   0.000  1.00  0.00           C\n"
+           "ATOM      3  C   ALA A   1       2.000   1.400   0.000  1.00  0.00           C\n"
+           "END\n";
+  }
+  const auto beyond = testing::run_molsurf("three.pdb --blocks 65537 -o s.pvtp", dir.path());
+  EXPECT_EQ(beyond.exit_code, 2);
+  EXPECT_NE(beyond.err.find("expected a whole number in 1..65536"), std::string::npos) << beyond.err;
+  for (const char* blocks : {"4", "65536"}) {
+    for (const char* output : {"s.pvtp", "m.vtp --merge"}) {
+      const auto run = testing::run_molsurf(std::string("three.pdb --blocks ") + blocks + " -o " + output, dir.path());
+      EXPECT_EQ(run.exit_code, 1) << blocks << " " << output;
+      EXPECT_NE(run.err.find(std::string(blocks) + " blocks for 3 atoms; at most one block per atom"), std::string::npos)
+          << run.err;
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "s_0.vtp"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "s.pvtp"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "m.vtp"));
+  // The index's extension in any case, as every mesh format's.
+  const auto three = testing::run_molsurf("three.pdb --blocks 3 -o S.PVTP -q", dir.path());
+  EXPECT_EQ(three.exit_code, 0) << three.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "S_2.vtp"));
+  EXPECT_EQ(testing::run_molsurf("check S.PVTP", dir.path()).exit_code, 0);
 }
 
 // Streamed pieces hold one block's spheres at a time, so --max-faces limits each block with

@@ -55,6 +55,8 @@ inline constexpr NumberParameter kVolumeSizeParameter{"volume_size", 0, 1e6, tru
 inline constexpr WholeParameter kFrequencyParameter{"frequency", 1, 200};
 inline constexpr WholeParameter kThreadsParameter{"threads", 0, 1024};  // 0: all cores
 inline constexpr WholeParameter kMaxFacesParameter{"max_faces", 1, 100'000'000'000};
+// Spatial blocks (--blocks): a file each with .pvtp; 65 536 blocks of 10^9 atoms hold 15 000 each.
+inline constexpr WholeParameter kBlocksParameter{"blocks", 1, 65536};
 
 // "[0, 1e+15]", "(0, 1e+09]", "1..200": the range as messages and --help print it.
 std::string range_text(const NumberParameter& parameter);

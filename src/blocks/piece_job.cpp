@@ -34,6 +34,12 @@ BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions
   validate(requested);
   refuse_unsupported(requested);
   if (blocks == 0) throw Error("--blocks: at least 1 block");
+  check(kBlocksParameter, static_cast<long long>(std::min<std::size_t>(blocks, 1ull << 62)));
+  // Blocks beyond the atoms would be empty pieces, each a file and a pass of its own.
+  if (blocks > atoms.size())
+    throw Error("--blocks: " + std::to_string(blocks) + " blocks for " + std::to_string(atoms.size()) +
+                (atoms.size() == 1 ? " atom" : " atoms") +
+                "; at most one block per atom (under mpirun the blocks default to the process count)");
   ComputeSurfaceOptions job = requested;
   if (streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
   BlockJob out{surface_detail::surface_job_options(atoms, job), {}};

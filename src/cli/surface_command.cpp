@@ -14,6 +14,7 @@
 #include "blocks/blocked_surface.hpp"
 #include "blocks/first_process_verdict.hpp"
 #include "blocks/pvtp_index.hpp"
+#include "io/mesh_formats.hpp"
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_bar.hpp"
@@ -196,7 +197,7 @@ int SurfaceCommand::run() const {
   // Under MPI with more than one process, one block each unless --blocks says otherwise.
   const std::size_t block_count = blocks > 0 ? blocks : exchange && exchange->size() > 1 ? exchange->size() : 0;
   if (merge && block_count == 0) throw Error("--merge glues the pieces of --blocks N: give --blocks as well");
-  const bool pieces = block_count > 0 && out.extension() == ".pvtp";
+  const bool pieces = block_count > 0 && mesh_io::is_pvtp_path(out);
   if (pieces && merge)
     throw Error("--merge writes one surface file: give -o NAME.vtp (or another mesh format), not " + out.string());
   if (pieces && split_components) throw Error("--split-components writes whole surfaces: give --merge with it");

@@ -227,8 +227,8 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "NAME_K.vtp as soon as it is made, the seams between them as NAME_seams.vtp, beside a ParaView\n"
                  "index NAME.pvtp: the peak memory is then a block's, or at the end the seams', not the\n"
                  "surface's; what each block keeps for the seams waits in a temporary file in TMPDIR\n"
-                 "(docs/scale-out.md)")
-      ->check(CLI::Range(1, 1 << 20));
+                 "(docs/scale-out.md); at most one block per atom")
+      ->check(whole_number_in(kBlocksParameter));
   app.add_flag("--merge", merge, "With --blocks: write the blocks glued into one surface file (-o NAME.vtp, ...); the whole\n"
                "surface is then held at once, as with any output but .pvtp");
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");

@@ -42,7 +42,13 @@ void check_replaceable(const std::filesystem::path& target) {
                "regular files (to discard a report, leave its option out)");
 }
 
-AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) { reserve_temporary(nullptr); }
+
+AtomicFile::AtomicFile(std::filesystem::path target, detail::TemporaryListing& listing) : target_(std::move(target)) {
+  reserve_temporary(&listing);
+}
+
+void AtomicFile::reserve_temporary(detail::TemporaryListing* listing) {
   if (target_.filename().empty()) fail(target_, "cannot write: not a file name");
   check_replaceable(target_);
   const std::filesystem::path directory = target_.parent_path();
@@ -53,7 +59,10 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   if (name_max > 0 && name.size() > static_cast<std::size_t>(name_max))
     fail(target_, "cannot write: File name too long (" + std::to_string(name.size()) + " bytes, more than the " +
                       std::to_string(name_max) + " its file system allows)");
-  detail::remove_stale_temporaries(target_);
+  if (listing != nullptr)
+    listing->remove_stale_of(name);
+  else
+    detail::remove_stale_temporaries(target_);
   // O_EXCL reserves the name: two threads or processes writing the same target each get
   // their own temporary, without a shared counter.
   for (int attempt = 0; attempt < kMaxNameAttempts; ++attempt) {
@@ -126,7 +135,9 @@ void AtomicFile::fail_with_errno(int error_number) const {
 }
 
 AtomicFile& AtomicFileSet::add(std::filesystem::path target) {
-  files_.push_back(std::make_unique<AtomicFile>(std::move(target)));
+  auto it = listings_.find(target.parent_path());
+  if (it == listings_.end()) it = listings_.try_emplace(target.parent_path(), target.parent_path()).first;
+  files_.push_back(std::make_unique<AtomicFile>(std::move(target), it->second));
   return *files_.back();
 }
 

@@ -16,9 +16,12 @@
 //   out.commit();
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string_view>
 #include <vector>
+
+#include "io/temporary_name.hpp"
 
 namespace molsurf {
 
@@ -31,6 +34,9 @@ class AtomicFile {
   // the target and the reason when the directory is missing or not writable, or the
   // target exists and is not a regular file.
   explicit AtomicFile(std::filesystem::path target);
+  // The same, with the directory's possible temporaries as `listing` took them (one listing
+  // for many targets in one directory).
+  AtomicFile(std::filesystem::path target, detail::TemporaryListing& listing);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -53,6 +59,7 @@ class AtomicFile {
 
  private:
   [[noreturn]] void fail_with_errno(int error_number) const;
+  void reserve_temporary(detail::TemporaryListing* listing);  // null: list the directory now
 
   std::filesystem::path target_;
   std::filesystem::path temp_;
@@ -82,6 +89,8 @@ class AtomicFileSet {
 
  private:
   std::vector<std::unique_ptr<AtomicFile>> files_;  // pointers: add() hands out references
+  // Each directory's possible temporaries, listed at its first file.
+  std::map<std::filesystem::path, detail::TemporaryListing> listings_;
 };
 
 // The common case: the whole content at once.

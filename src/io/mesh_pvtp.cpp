@@ -6,6 +6,7 @@
 // vertices of each piece's open edges that are equal in all three coordinates, and no
 // others: a vertex inside a piece stays its own, and a seam that does not close shows in
 // the check as open edges.
+#include <cctype>
 #include <array>
 #include <map>
 #include <set>
@@ -86,6 +87,12 @@ Mesh read_pvtp(const path& file) {
   }
   if (pieces == 0) fail(file, index->line, "the index lists no <Piece>");
   return glued;
+}
+
+bool is_pvtp_path(const path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".pvtp";
 }
 
 }  // namespace molsurf::mesh_io

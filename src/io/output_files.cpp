@@ -4,7 +4,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <map>
 #include <optional>
+#include <vector>
 
 #include "io/atomic_file.hpp"
 #include "io/mesh_formats.hpp"
@@ -49,9 +51,28 @@ void check_output_paths(std::span<const fs::path> inputs, std::span<const Output
     std::string what;  // "the output of -o", "the input"
     Identity id;
   };
+  // Found by device and inode, or by canonical path (same_file): a `.pvtp` of many blocks
+  // names thousands of pieces, each looked up here.
   std::vector<Named> taken;
+  std::map<std::pair<dev_t, ino_t>, std::size_t> by_node;
+  std::multimap<fs::path, std::size_t> by_path;
+  auto take = [&](Named named) {
+    if (named.id.node) by_node.emplace(*named.id.node, taken.size());
+    by_path.emplace(named.id.canonical, taken.size());
+    taken.push_back(std::move(named));
+  };
+  auto taken_as = [&](const Identity& id) -> const Named* {  // the first taken, as named first
+    std::size_t first = taken.size();
+    if (id.node)
+      if (const auto it = by_node.find(*id.node); it != by_node.end()) first = it->second;
+    const auto [begin, end] = by_path.equal_range(id.canonical);
+    for (auto it = begin; it != end; ++it)
+      if (it->second < first && same_file(id, taken[it->second].id)) first = it->second;
+    return first < taken.size() ? &taken[first] : nullptr;
+  };
+  std::map<fs::path, detail::TemporaryListing> listings;  // per directory
   for (const fs::path& input : inputs)
-    if (!input.empty()) taken.push_back({input, "an input file", identify(input)});
+    if (!input.empty()) take({input, "an input file", identify(input)});
 
   const OutputRequest* standard_output = nullptr;
   for (const OutputRequest& request : outputs) {
@@ -75,12 +96,11 @@ void check_output_paths(std::span<const fs::path> inputs, std::span<const Output
                                    : "the " + file.extension().string() + " file written with " + request.option +
                                          " " + request.path.string();
       const Identity id = identify(file);
-      for (const Named& other : taken)
-        if (same_file(id, other.id))
-          throw Error(request.option + " " + quoted(request.path) + ": " +
-                      (file == request.path ? std::string("this") : quoted(file)) + " is " + other.what +
-                      (other.path != file ? " (" + quoted(other.path) + ")" : std::string()) +
-                      "; refusing to overwrite it: give each output its own file");
+      if (const Named* other = taken_as(id))
+        throw Error(request.option + " " + quoted(request.path) + ": " +
+                    (file == request.path ? std::string("this") : quoted(file)) + " is " + other->what +
+                    (other->path != file ? " (" + quoted(other->path) + ")" : std::string()) +
+                    "; refusing to overwrite it: give each output its own file");
       check_replaceable(file);
       const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
       std::error_code error;
@@ -88,8 +108,10 @@ void check_output_paths(std::span<const fs::path> inputs, std::span<const Output
         fail(file, "cannot write: directory " + quoted(directory) + " does not exist");
       // A temporary made and removed: whatever would stop the write (a name too long, a
       // read-only directory, no permission) stops the run now, before any work.
-      AtomicFile probe(file);
-      taken.push_back({file, role, id});
+      auto listing = listings.find(directory);
+      if (listing == listings.end()) listing = listings.try_emplace(directory, file.parent_path()).first;
+      AtomicFile probe(file, listing->second);
+      take({file, role, id});
     }
   }
 }

@@ -25,18 +25,12 @@ Mesh read_by_format(const std::filesystem::path& path, MeshFormat format) {
   fail(path, "unknown mesh format");
 }
 
-bool is_pvtp_index(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".pvtp";
-}
-
 }  // namespace
 
 Mesh read_mesh(const std::filesystem::path& path) {
   // A surface in pieces: written only by the blocked surface (its pieces and index), read
   // as the one mesh it is; no MeshFormat of its own.
-  Mesh mesh = is_pvtp_index(path) ? mesh_io::read_pvtp(path) : read_by_format(path, mesh_format_from_path(path));
+  Mesh mesh = mesh_io::is_pvtp_path(path) ? mesh_io::read_pvtp(path) : read_by_format(path, mesh_format_from_path(path));
   mesh_io::check_vertex_coordinates(mesh, path);
   if (mesh.has_tags() && mesh.face_tags.size() != mesh.face_count())
     fail(path, "internal: " + std::to_string(mesh.face_tags.size()) + " tags for " +

@@ -49,8 +49,10 @@ std::string temporary_name(std::string_view target_name, pid_t pid, int attempt)
   return temporary_prefix(target_name) + std::to_string(pid) + "-" + std::to_string(attempt);
 }
 
-std::optional<pid_t> temporary_owner(std::string_view entry, std::string_view target_name) {
-  const std::string prefix = temporary_prefix(target_name);
+namespace {
+
+// The PID in `entry` when it is `prefix` followed by "PID-N".
+std::optional<pid_t> owner_after(std::string_view entry, std::string_view prefix) {
   if (!entry.starts_with(prefix)) return std::nullopt;
   const std::string_view rest = entry.substr(prefix.size());
   const std::size_t dash = rest.find('-');
@@ -63,27 +65,50 @@ std::optional<pid_t> temporary_owner(std::string_view entry, std::string_view ta
   return pid;
 }
 
+}  // namespace
+
+std::optional<pid_t> temporary_owner(std::string_view entry, std::string_view target_name) {
+  return owner_after(entry, temporary_prefix(target_name));
+}
+
 void remove_stale_temporaries(const std::filesystem::path& target) noexcept {
-  const std::filesystem::path directory = target.parent_path();
-  const std::string name = target.filename().string();
-  const int fd = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  DIR* listing = ::fdopendir(fd);
-  if (listing == nullptr) {
+  TemporaryListing(target.parent_path()).remove_stale_of(target.filename().string());
+}
+
+TemporaryListing::TemporaryListing(const std::filesystem::path& directory) noexcept : directory_(directory) {
+  DIR* listing = ::opendir(directory_.empty() ? "." : directory_.c_str());
+  if (listing == nullptr) return;
+  try {
+    while (const dirent* entry = ::readdir(listing)) {
+      const std::string_view name = entry->d_name;
+      if (name.starts_with('.') && name.find(".tmp-") != std::string_view::npos) names_.emplace_back(name);
+    }
+  } catch (...) {  // out of memory: nothing is removed, which is harmless
+    names_.clear();
+  }
+  ::closedir(listing);
+}
+
+void TemporaryListing::remove_stale_of(std::string_view target_name) noexcept {
+  if (names_.empty()) return;
+  try {
+    const int fd = ::open(directory_.empty() ? "." : directory_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    const std::string prefix = temporary_prefix(target_name);
+    const pid_t self = ::getpid();
+    for (std::string& name : names_) {
+      const std::optional<pid_t> owner = owner_after(name, prefix);
+      if (!owner || *owner == self) continue;
+      // Signal 0 asks only whether the process exists; EPERM means it does (another user's).
+      if (::kill(*owner, 0) == 0 || errno != ESRCH) continue;
+      struct stat status {};
+      if (::fstatat(fd, name.c_str(), &status, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(status.st_mode)) continue;
+      ::unlinkat(fd, name.c_str(), 0);
+      name.clear();  // starts with no prefix: never matched again
+    }
     ::close(fd);
-    return;
+  } catch (...) {  // out of memory building the prefix: nothing removed
   }
-  const pid_t self = ::getpid();
-  while (const dirent* entry = ::readdir(listing)) {
-    const std::optional<pid_t> owner = temporary_owner(entry->d_name, name);
-    if (!owner || *owner == self) continue;
-    // Signal 0 asks only whether the process exists; EPERM means it does (another user's).
-    if (::kill(*owner, 0) == 0 || errno != ESRCH) continue;
-    struct stat status {};
-    if (::fstatat(fd, entry->d_name, &status, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(status.st_mode)) continue;
-    ::unlinkat(fd, entry->d_name, 0);
-  }
-  ::closedir(listing);  // closes fd too
 }
 
 }  // namespace molsurf::detail

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <sys/types.h>
 
@@ -26,5 +27,20 @@ std::optional<pid_t> temporary_owner(std::string_view entry, std::string_view ta
 // exists: what SIGKILL or a power cut left. A temporary whose process is alive (or that
 // this process may not signal, another user's) is left alone. Never throws.
 void remove_stale_temporaries(const std::filesystem::path& target) noexcept;
+
+// The entries of one directory that may be temporaries, listed once: a job that writes
+// thousands of files into one directory (the pieces of a .pvtp) would otherwise read the
+// whole directory again for each. A temporary left after the listing was taken is removed
+// by a later run.
+class TemporaryListing {
+ public:
+  explicit TemporaryListing(const std::filesystem::path& directory) noexcept;
+  // remove_stale_temporaries for a target (its name) in this directory. Never throws.
+  void remove_stale_of(std::string_view target_name) noexcept;
+
+ private:
+  std::filesystem::path directory_;
+  std::vector<std::string> names_;  // begin with '.' and hold ".tmp-"
+};
 
 }  // namespace molsurf::detail
