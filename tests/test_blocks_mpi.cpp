@@ -190,5 +190,30 @@ TEST(TwoProcesses, AReadErrorReachesEveryProcess) {
 #endif
 }
 
+// More processes than atoms: the blocks default to the process count, and a block needs an
+// atom, so every process stops with the message a single process gives for --blocks 2.
+TEST(TwoProcesses, MoreProcessesThanAtomsStopEveryProcess) {
+#ifndef MOLSURF_MPIRUN
+  GTEST_SKIP() << "molsurf built without MPI";
+#else
+  testing::TempDir dir;
+  {
+    std::ofstream one(dir.path() / "one.pdb");
+    one << "ATOM      1  CA  ALA A   1       0.000   0.000   0.000  1.00  0.00           C\n";
+  }
+  const auto launched = testing::run_molsurf("one.pdb -o s.pvtp --json s.json", dir.path(),
+                                             "timeout 120 " MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 2 ");
+  EXPECT_NE(launched.exit_code, 0);
+  EXPECT_NE(launched.exit_code, 124) << "a process waited (timeout)";
+  const std::string message = "2 blocks for 1 atom; at most one block per atom";
+  EXPECT_EQ(count_of(launched.err, message), 2u) << launched.err;
+  const auto alone = testing::run_molsurf("one.pdb --blocks 2 -o s.pvtp", dir.path());
+  EXPECT_EQ(alone.exit_code, 1);
+  EXPECT_EQ(count_of(alone.err, message), 1u) << alone.err;
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s.json"})
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / name)) << name;
+#endif
+}
+
 }  // namespace
 }  // namespace molsurf
