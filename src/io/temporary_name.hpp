@@ -35,6 +35,9 @@ void remove_stale_temporaries(const std::filesystem::path& target) noexcept;
 class TemporaryListing {
  public:
   explicit TemporaryListing(const std::filesystem::path& directory) noexcept;
+  // Nothing listed: for a temporary made and removed at once, which the write that follows
+  // lists the directory for anyway.
+  TemporaryListing() = default;
   // remove_stale_temporaries for a target (its name) in this directory. Never throws.
   void remove_stale_of(std::string_view target_name) noexcept;
 
