@@ -38,6 +38,9 @@ void check_output_paths(std::span<const std::filesystem::path> inputs, std::span
 class OutputFiles {
  public:
   OutputFiles();
+  // `list_directories` false: the stale temporaries of the targets were removed already
+  // (molsurf batch does, listing its output folder once for all its jobs).
+  explicit OutputFiles(bool list_directories);
   ~OutputFiles();
   OutputFiles(const OutputFiles&) = delete;
   OutputFiles& operator=(const OutputFiles&) = delete;

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "molsurf/error.hpp"
+#include "molsurf/io.hpp"
 
 extern char** environ;
 
@@ -49,7 +50,8 @@ int available_cores() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-BatchJobs::BatchJobs(BatchJobOptions options) : options_(std::move(options)) {
+BatchJobs::BatchJobs(BatchJobOptions options)
+    : options_(std::move(options)), temporaries_(options_.output_directory) {
   std::error_code error;
   self_ = std::filesystem::read_symlink("/proc/self/exe", error).string();
   if (error) throw Error("cannot find the molsurf executable (/proc/self/exe): " + error.message());
@@ -67,9 +69,16 @@ BatchJobs::~BatchJobs() {
 
 void BatchJobs::start(const io::BatchJob& job) {
   const std::filesystem::path base = options_.output_directory / job.name;
-  std::vector<std::string> args{self_, job.input, "-q", "--threads", "1", "--json", base.string() + ".json"};
-  if (options_.mesh.empty()) args.push_back("--areas-only");
-  else args.insert(args.end(), {"-o", base.string() + "." + options_.mesh});
+  std::vector<std::string> args{self_, job.input, "-q", "--threads", "1", "--json", base.string() + ".json",
+                                "--stale-temporaries-removed"};
+  temporaries_.remove_stale_of(job.name + ".json");
+  if (options_.mesh.empty()) {
+    args.push_back("--areas-only");
+  } else {
+    args.insert(args.end(), {"-o", base.string() + "." + options_.mesh});
+    for (const std::filesystem::path& file : mesh_output_files(base.string() + "." + options_.mesh))
+      temporaries_.remove_stale_of(file.filename().string());
+  }
   args.insert(args.end(), options_.options.begin(), options_.options.end());
   std::vector<char*> argv, envp;
   for (std::string& a : args) argv.push_back(a.data());

@@ -48,6 +48,7 @@ struct SurfaceCommand {
   bool progress = false;  // the progress bar even when stderr is not a terminal
   std::size_t blocks = 0;  // --blocks N: the surface in N spatial blocks, one after another (0: not)
   bool merge = false;      // --merge: the blocks glued into one file rather than a .pvtp's pieces
+  bool stale_listed = false;  // --stale-temporaries-removed (batch's jobs): list no directory
   // The processes of an MPI launch (null: this one alone); with more than one, the blocks
   // are theirs (one each unless --blocks says otherwise).
   blocks::BlockExchange* exchange = nullptr;

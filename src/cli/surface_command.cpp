@@ -265,7 +265,7 @@ int SurfaceCommand::run() const {
   // All or nothing: every file is complete before any replaces an old one (the pieces go to
   // their temporaries as they are made; under MPI each process keeps its own pieces' files,
   // and replaces them once the first has found the whole surface valid).
-  OutputFiles files;
+  OutputFiles files(!stale_listed);
   const SurfaceFileOptions file{.ascii = ascii, .msms_header = !no_header, .threads = threads};
   MeshWriteOptions piece_options = surface_write_options(kind(), spheres, named, structure, file);
   if (!read_here) piece_options.atom_tags = share.global_index;
@@ -375,7 +375,7 @@ int SurfaceCommand::run_areas_only() const {
   report.exact->seconds = computed.seconds;
   const std::vector<double> atom_area = exact_atom_area(computed.arrangement, outer_only);
 
-  OutputFiles files;
+  OutputFiles files(!stale_listed);
   if (!all_models) {
     if (!per_atom.empty()) files.add_text(per_atom, per_atom_csv(s.atoms, atom_area));
     add_area_tables(*this, s.atoms, atom_area, report, files);
@@ -427,7 +427,7 @@ int SurfaceCommand::run_model_meshes() const {
   if (!quiet) text << format_read_report(models.front().report);
   flush_standard_output();
 
-  OutputFiles files;
+  OutputFiles files(!stale_listed);
   std::vector<FrameAreas> areas(models.size());
   std::vector<std::size_t> faces(models.size());
   for (std::size_t k = 0; k < models.size(); ++k) {

@@ -232,6 +232,10 @@ void SurfaceCommand::add_options(CLI::App& app) {
   app.add_flag("--merge", merge, "With --blocks: write the blocks glued into one surface file (-o NAME.vtp, ...); the whole\n"
                "surface is then held at once, as with any output but .pvtp");
   app.add_flag("-q,--quiet", quiet, "Print nothing but errors");
+  // molsurf batch's jobs: their outputs' stale temporaries were removed by the batch, which
+  // lists its output folder once; each job listing a folder of a sweep's reports again
+  // costs more than a small structure's whole run.
+  app.add_flag("--stale-temporaries-removed", stale_listed)->group("");
   app.add_flag("--progress", progress,
                "Show the progress bar of each stage on stderr even when it is not a terminal (it shows on a\n"
                "terminal anyway; -q silences it)");

@@ -136,7 +136,9 @@ void AtomicFile::fail_with_errno(int error_number) const {
 
 AtomicFile& AtomicFileSet::add(std::filesystem::path target) {
   auto it = listings_.find(target.parent_path());
-  if (it == listings_.end()) it = listings_.try_emplace(target.parent_path(), target.parent_path()).first;
+  if (it == listings_.end())
+    it = list_directories_ ? listings_.try_emplace(target.parent_path(), target.parent_path()).first
+                           : listings_.try_emplace(target.parent_path()).first;
   files_.push_back(std::make_unique<AtomicFile>(std::move(target), it->second));
   return *files_.back();
 }

@@ -79,6 +79,10 @@ void check_replaceable(const std::filesystem::path& target);
 // names the files already replaced and those left as they were.
 class AtomicFileSet {
  public:
+  AtomicFileSet() = default;
+  // With `list_directories` false, no directory is listed for stale temporaries: for a
+  // caller that removed its targets' already (molsurf batch, for its jobs).
+  explicit AtomicFileSet(bool list_directories) : list_directories_(list_directories) {}
   AtomicFile& add(std::filesystem::path target);
   // Completes every temporary (AtomicFile::finish); throws molsurf::Error, replacing
   // nothing, when one cannot be written. commit() does this first anyway.
@@ -91,6 +95,7 @@ class AtomicFileSet {
   std::vector<std::unique_ptr<AtomicFile>> files_;  // pointers: add() hands out references
   // Each directory's possible temporaries, listed at its first file.
   std::map<std::filesystem::path, detail::TemporaryListing> listings_;
+  bool list_directories_ = true;
 };
 
 // The common case: the whole content at once.

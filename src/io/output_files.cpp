@@ -117,6 +117,7 @@ void check_output_paths(std::span<const fs::path> inputs, std::span<const Output
 }
 
 OutputFiles::OutputFiles() : files_(std::make_unique<AtomicFileSet>()) {}
+OutputFiles::OutputFiles(bool list_directories) : files_(std::make_unique<AtomicFileSet>(list_directories)) {}
 OutputFiles::~OutputFiles() = default;
 
 void OutputFiles::add_mesh(const fs::path& path, const Mesh& mesh, const MeshWriteOptions& options) {
