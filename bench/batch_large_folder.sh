@@ -3,13 +3,14 @@
 # late in the sweep (docs/batch.md, "Large output folders"): K copies of a structure,
 # --areas-only, -j 2, into a folder of F empty files, each run from a folder without their
 # reports. Prints the median wall and processor seconds of R runs for each molsurf given.
-# Usage: bench/batch_large_folder.sh STRUCTURE [K] [F] [R] MOLSURF...
+# Usage: bench/batch_large_folder.sh STRUCTURE K F R [MOLSURF...]   (e.g. data/pdb/1crn.pdb 40 200000 5;
+# MOLSURF defaults to build/release/molsurf)
 set -euo pipefail
 structure="$(realpath "$1")"
 copies="${2:-40}"
 fillers="${3:-200000}"
 runs="${4:-5}"
-shift 4 || { echo "usage: $0 STRUCTURE [K] [F] [R] MOLSURF..." >&2; exit 2; }
+shift 4 || { echo "usage: $0 STRUCTURE K F R [MOLSURF...]" >&2; exit 2; }
 (($# > 0)) || set -- build/release/molsurf
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
