@@ -165,6 +165,23 @@ TEST(TwoProcesses, OnlyTheFirstReadsTheStructure) {
 #endif
 }
 
+#ifdef MOLSURF_MPIRUN
+// `structure` (in `dir`) on two processes, which must both stop, none waiting, each with
+// `message`, writing none of s.pvtp, its pieces and s.json; returns what they printed.
+std::string stopped_on_two_processes(const testing::TempDir& dir, const std::string& structure,
+                                     const std::string& message) {
+  const auto launched = testing::run_molsurf(structure + " -o s.pvtp --json s.json", dir.path(),
+                                             "timeout 120 " MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 2 ");
+  EXPECT_NE(launched.exit_code, 0);
+  EXPECT_NE(launched.exit_code, 124) << "a process waited (timeout)";
+  // Each process writes its prefix and its message separately, and mpirun may interleave them.
+  EXPECT_EQ(count_of(launched.err, message), 2u) << launched.err;
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s.json"})
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / name)) << name;
+  return launched.err;
+}
+#endif
+
 // A structure the first process cannot read: every process stops with the same one-line
 // message (none waits for a share that will not come), and nothing is written.
 TEST(TwoProcesses, AReadErrorReachesEveryProcess) {
@@ -177,16 +194,9 @@ TEST(TwoProcesses, AReadErrorReachesEveryProcess) {
     broken << "ATOM      1  N   THR A   1      17.047  14.099   3.625  1.00 13.79           N\n"
               "ATOM      2  CA  THR A   1       1e400  12.784   4.338  1.00 10.80           C\n";
   }
-  const auto launched = testing::run_molsurf("broken.pdb -o s.pvtp --json s.json", dir.path(),
-                                             "timeout 120 " MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 2 ");
-  EXPECT_NE(launched.exit_code, 0);
-  EXPECT_NE(launched.exit_code, 124) << "a process waited (timeout)";
-  // Each process writes its prefix and its message separately, and mpirun may interleave them.
-  const std::string message = "broken.pdb:2: ATOM record: x coordinate '1e400' (columns 31-38) is not a number";
-  EXPECT_EQ(count_of(launched.err, message), 2u) << launched.err;
-  EXPECT_EQ(count_of(launched.err, "molsurf: error:"), 2u) << launched.err;
-  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s.json"})
-    EXPECT_FALSE(std::filesystem::exists(dir.path() / name)) << name;
+  const std::string err = stopped_on_two_processes(
+      dir, "broken.pdb", "broken.pdb:2: ATOM record: x coordinate '1e400' (columns 31-38) is not a number");
+  EXPECT_EQ(count_of(err, "molsurf: error:"), 2u) << err;
 #endif
 }
 
@@ -201,16 +211,12 @@ TEST(TwoProcesses, MoreProcessesThanAtomsStopEveryProcess) {
     std::ofstream one(dir.path() / "one.pdb");
     one << "ATOM      1  CA  ALA A   1       0.000   0.000   0.000  1.00  0.00           C\n";
   }
-  const auto launched = testing::run_molsurf("one.pdb -o s.pvtp --json s.json", dir.path(),
-                                             "timeout 120 " MOLSURF_MPIRUN " --oversubscribe --allow-run-as-root -np 2 ");
-  EXPECT_NE(launched.exit_code, 0);
-  EXPECT_NE(launched.exit_code, 124) << "a process waited (timeout)";
   const std::string message = "2 blocks for 1 atom; at most one block per atom";
-  EXPECT_EQ(count_of(launched.err, message), 2u) << launched.err;
+  stopped_on_two_processes(dir, "one.pdb", message);
   const auto alone = testing::run_molsurf("one.pdb --blocks 2 -o s.pvtp", dir.path());
   EXPECT_EQ(alone.exit_code, 1);
   EXPECT_EQ(count_of(alone.err, message), 1u) << alone.err;
-  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp", "s.json"})
+  for (const char* name : {"s.pvtp", "s_0.vtp", "s_1.vtp"})
     EXPECT_FALSE(std::filesystem::exists(dir.path() / name)) << name;
 #endif
 }

@@ -54,9 +54,9 @@ Mesh read_stl(const path& file);
 Mesh read_obj(const path& file);
 Mesh read_msms(const path& file);
 Mesh read_msh(const path& file);
-// A .pvtp index: its .vtp pieces glued along their seams (mesh_pvtp.cpp).
 // Whether `file` names a .pvtp index (the extension in any case, as the formats are).
 bool is_pvtp_path(const path& file);
+// A .pvtp index: its .vtp pieces glued along their seams (mesh_pvtp.cpp).
 Mesh read_pvtp(const path& file);
 
 // ---- shared helpers --------------------------------------------------------------

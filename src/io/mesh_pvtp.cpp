@@ -6,8 +6,8 @@
 // vertices of each piece's open edges that are equal in all three coordinates, and no
 // others: a vertex inside a piece stays its own, and a seam that does not close shows in
 // the check as open edges.
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <map>
 #include <set>
 #include <string>

@@ -1,7 +1,6 @@
 // read_mesh: picks the reader from the extension, then checks what every reader
 // promises (indices in range, coordinates finite and below 1e16 in magnitude, one tag per
 // face or none).
-#include <cctype>
 #include <string>
 
 #include "io/mesh_formats.hpp"
