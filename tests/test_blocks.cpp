@@ -228,9 +228,6 @@ TEST(BlockedSurface, CleanedBlocksMatchTheSingleProcessSurface) {
 TEST(BlockedSurface, RefusesWhatItDoesNotSplit) {
   const std::vector<Atom> atoms{atom_at({0, 0, 0}, 1.5), atom_at({2, 0, 0}, 1.5)};
   ComputeSurfaceOptions options;
-  options.surface = SurfaceKind::ses;
-  EXPECT_THROW(compute_blocked_surface(atoms, options, {.blocks = 2}), Error);
-  options = {};
   options.method = SurfaceMethod::pairwise;
   EXPECT_THROW(compute_blocked_surface(atoms, options, {.blocks = 2}), Error);
   options = {};

@@ -3,6 +3,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <chrono>
 #include <optional>
 #include <stdexcept>
@@ -28,6 +30,7 @@
 #include "molsurf/parameters.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "surface/cleanup.hpp"
+#include "surface/ses_from_union.hpp"
 #include "surface/surface_job_options.hpp"
 
 namespace molsurf::blocks {
@@ -41,6 +44,45 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // The faces of `mesh` whose atom lies in block `block`, on their own vertices.
 Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, std::size_t block) {
   return faces_where(mesh, [&](std::size_t f) { return block_of[static_cast<std::size_t>(mesh.face_tags[f])] == block; });
+}
+
+// The glued union in the one-pass union's own order: faces by atom (each atom's in the order
+// its piece made them, which is the whole union's), vertices in the order the faces first
+// name them. The SES drawn from it is then the one process draws, face for face (the Boolean
+// that carves its ridges triangulates a cut face by the order of its input).
+Mesh in_union_order(const Mesh& glued) {
+  std::vector<std::size_t> order(glued.face_count());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return glued.face_tags[a] < glued.face_tags[b]; });
+  Mesh out;
+  out.faces.reserve(order.size());
+  out.face_tags.reserve(order.size());
+  std::vector<Index> renumbered(glued.vertex_count(), std::numeric_limits<Index>::max());
+  for (std::size_t f : order) {
+    Triangle t = glued.faces[f];
+    for (Index& v : t) {
+      if (renumbered[v] == std::numeric_limits<Index>::max()) {
+        renumbered[v] = static_cast<Index>(out.vertices.size());
+        out.vertices.push_back(glued.vertices[v]);
+      }
+      v = renumbered[v];
+    }
+    out.faces.push_back(t);
+    out.face_tags.push_back(glued.face_tags[f]);
+  }
+  return out;
+}
+
+// The pieces as written: the checked surface's faces, block by block (a face's block is its
+// atom's; the seams' cleanup kept every face's atom, and so does the SES's every step).
+void hand_out_pieces(const Mesh& surface, const BlockPartition& partition, const BlockedSurfaceOptions& blocked,
+                     std::vector<BlockStats>& stats) {
+  for (std::size_t b = 0; b < partition.size(); ++b) {
+    const Mesh piece = faces_of_block(surface, partition.block_of, b);
+    stats[b].faces = piece.faces.size();
+    if (blocked.piece_done) blocked.piece_done(b, piece);
+  }
 }
 
 }  // namespace
@@ -63,6 +105,7 @@ std::vector<std::string> piece_problems(const MeshCheck& check, std::size_t seam
 BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested,
                                        const BlockedSurfaceOptions& blocked) {
   const auto start = Clock::now();
+  const bool streamed = blocked.streamed && streams(requested);
   const BlockShare* share = blocked.share;
   if (share == nullptr && blocked.exchange != nullptr && blocked.exchange->size() > 1)
     throw std::logic_error("compute_blocked_surface: the processes of an exchange need their shares (share_blocks)");
@@ -79,7 +122,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     validate(requested);
     refuse_unsupported(requested);
     ComputeSurfaceOptions job = requested;
-    if (blocked.streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
+    if (streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
     if (share->partition) {
       options = surface_detail::surface_job_options(atoms, job);
       whole_partition = &*share->partition;
@@ -98,20 +141,21 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     if (options.progress) options.progress(stage, done, total);
   };
 
-  if (blocked.streamed) {
-    ComputeSurfaceOptions streamed = options;
-    streamed.threads = result.threads;
+  if (streamed) {
+    ComputeSurfaceOptions streamed_options = options;
+    streamed_options.threads = result.threads;
     const Vec3 origin = whole_partition ? volume_origin(atoms) : share->origin;
     return compute_streamed_surface(whole_partition ? atoms : std::span<const Atom>{}, whole_partition, held, origin,
-                                    streamed, blocked);
+                                    streamed_options, blocked);
   }
+  const bool ses = options.surface == SurfaceKind::ses;
   const std::size_t block_count = held.block_count();
   report(SurfaceStage::union_, 0, block_count);
   std::optional<std::vector<PieceMessage>> made = pieces_of_all_blocks<PieceMessage>(
       block_count, blocked.exchange,
       [&](std::size_t b) {
         PieceMessage piece = make_piece(held, b, options, result.threads);
-        if (options.exact_areas) {
+        if (options.exact_areas && !ses) {
           const auto clock = Clock::now();
           piece.exact = block_arrangement(held.block_atoms(b), options.spheres, result.threads);
           piece.seconds_exact = seconds_since(clock);
@@ -155,6 +199,20 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
       glue_pieces(pieces, seams, exact_same_point(atoms, options.spheres, partition.contained), &glued_seam);
   pieces = {};
   seams = {};
+  if (ses) {
+    // The SES drawn from the glued union, as one process draws it from its own.
+    ComputeSurfaceOptions whole = options;
+    whole.progress = nullptr;
+    whole.threads = result.threads;
+    const double seconds_pieces = result.seconds.union_;
+    ComputedSurface surface = surface_detail::compute_ses_from_union(atoms, whole, in_union_order(glued));
+    surface.seconds.union_ += seconds_pieces;
+    result = std::move(surface);
+    report(SurfaceStage::check, 1, 1);
+    hand_out_pieces(result.mesh, partition, blocked, out.blocks);
+    result.seconds.total = seconds_since(start);
+    return out;
+  }
   if (options.cleanup) {
     // The seams' own cleanup: their slivers, which no piece could touch, with the faces of
     // both sides in view; everything but a band two rings wider than the pieces left frozen.
@@ -190,13 +248,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   result.quality_after = result.check.quality;
   if (result.cleanup) result.cleanup->before = before;
   result.quality_before = before;
-  // The pieces as written: the checked surface's faces, block by block (a face's block is
-  // its atom's; the seams' cleanup kept every face's atom).
-  for (std::size_t b = 0; b < partition.size(); ++b) {
-    const Mesh piece = faces_of_block(glued, partition.block_of, b);
-    out.blocks[b].faces = piece.faces.size();
-    if (blocked.piece_done) blocked.piece_done(b, piece);
-  }
+  hand_out_pieces(glued, partition, blocked, out.blocks);
   result.mesh = std::move(glued);
   result.method = SurfaceMethod::one_pass;
   result.seconds.total = seconds_since(start);

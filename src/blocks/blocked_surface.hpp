@@ -8,6 +8,9 @@
 // exact areas come from each block's own arrangement (block_areas.hpp), joined.
 // Streamed (streamed_surface.hpp): each piece's faces away from the seams are handed out
 // as soon as the piece is checked and released; the peak memory is a piece's and the seams'.
+// The SES: the union's pieces are glued as they leave the union, and the SES is drawn from
+// the whole glued union as compute_surface draws it from its own (ses_from_union.hpp); it is
+// never streamed, and its peak memory is the whole SES's.
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -32,7 +35,7 @@ struct BlockedSurfaceOptions {
   // Streamed: the mesh's faces are not kept; the seams' faces, cleaned and checked with the
   // faces near them, go to `seams_done` (on the first process; may be empty, and so may the
   // seams with one block), and the result's mesh is empty, its measures and check merged
-  // from the pieces'.
+  // from the pieces'. Ignored for the SES (never streamed: streams(), piece_job.hpp).
   bool streamed = false;
   std::function<void(const Mesh& seams)> seams_done;
   // Processes that share the job (may be null: this one alone). Each makes its blocks'
@@ -54,8 +57,8 @@ struct BlockedSurface {
   bool root = true;
 };
 
-// The SAS and vdW surfaces by the one-pass method (the SES, the pairwise method, outer_only
-// and true_points are refused with molsurf::Error). Throws SurfaceCheckFailed when a piece
+// The SAS, vdW and SES surfaces by the one-pass method (the pairwise method, outer_only and
+// true_points are refused with molsurf::Error). Throws SurfaceCheckFailed when a piece
 // or the glued surface fails its check.
 BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
                                        const BlockedSurfaceOptions& blocked);

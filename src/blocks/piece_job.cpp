@@ -33,6 +33,7 @@ BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions
                         bool streamed) {
   validate(requested);
   refuse_unsupported(requested);
+  streamed = streamed && streams(requested);
   if (blocks == 0) throw Error("--blocks: at least 1 block");
   check(kBlocksParameter, static_cast<long long>(std::min<std::size_t>(blocks, 1ull << 62)));
   // Blocks beyond the atoms would be empty pieces, each a file and a pass of its own.
@@ -54,9 +55,9 @@ BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions
   return out;
 }
 
+bool streams(const ComputeSurfaceOptions& options) { return options.surface != SurfaceKind::ses; }
+
 void refuse_unsupported(const ComputeSurfaceOptions& options) {
-  if (options.surface == SurfaceKind::ses)
-    throw Error("--blocks computes the solvent-accessible and van der Waals surfaces; the SES is not split into blocks");
   if (options.method != SurfaceMethod::one_pass)
     throw Error("--blocks runs the one-pass union (the default --method); the pairwise union is not split into blocks");
   if (options.outer_only) throw Error("--blocks keeps the cavities: drop --outer-only");
@@ -100,7 +101,10 @@ PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurf
   m.seconds_union = seconds_since(clock);
   clock = Clock::now();
   m.before = mesh_quality(piece.mesh);
-  if (options.cleanup) {
+  // The SES is drawn from the union as the union leaves it (solvent_excluded_surface.hpp):
+  // its pieces are glued uncleaned, and the SES drawn from the whole is checked.
+  const bool ses = options.surface == SurfaceKind::ses;
+  if (options.cleanup && !ses) {
     // The seam's vertices are shared with the neighbouring pieces: frozen, both sides
     // keep them where the union put them, and the pieces still glue exactly. So are the
     // vertices near them: an edit there could cross a neighbouring piece's face, which this
@@ -117,8 +121,9 @@ PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurf
   m.stats.seam_edges = seam_edges(piece.mesh).size();
   MeshCheckOptions check_options;
   check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = check_mesh(piece.mesh, check_options);
-  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
+  const MeshCheck check = ses ? MeshCheck{} : check_mesh(piece.mesh, check_options);
+  if (const auto problems = ses ? std::vector<std::string>{} : piece_problems(check, m.stats.seam_edges);
+      !problems.empty()) {
     std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its piece has";
     for (const std::string& p : problems) text += " " + p + ";";
     throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});

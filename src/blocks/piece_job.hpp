@@ -31,12 +31,17 @@ struct BlockJob {
 BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested, std::size_t blocks,
                         bool streamed);
 
-// molsurf::Error for what blocks do not make: the SES, the pairwise method, outer_only,
-// true_points, the Stern layer.
+// Whether a job asked to stream its pieces can: the SES is drawn from the whole glued union
+// (solvent_excluded_surface.hpp), so it is held whole and never streamed.
+bool streams(const ComputeSurfaceOptions& options);
+
+// molsurf::Error for what blocks do not make: the pairwise method, outer_only, true_points,
+// the Stern layer.
 void refuse_unsupported(const ComputeSurfaceOptions& options);
 
 // Block b's piece, from the atoms this process holds: computed, cleaned with its seam band
-// frozen, checked but for the seam (SurfaceCheckFailed otherwise).
+// frozen, checked but for the seam (SurfaceCheckFailed otherwise). For the SES, the union's
+// piece as it leaves it: the SES is drawn from the glued union, and checked then.
 PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads);
 
 // The counts of one more cleanup (a piece's, or the seams').

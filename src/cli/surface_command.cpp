@@ -233,7 +233,8 @@ int SurfaceCommand::run() const {
     report.seconds.read = seconds_since(read_start);
     // compute_surface refuses the same; checked here too so that nothing is printed first.
     // Streamed pieces hold one block's spheres at a time: the blocked job checks each block.
-    if (!pieces) check_sphere_resources(structure, read_here->atoms, spheres, max_faces);
+    // The SES is drawn whole (blocks::streams).
+    if (!pieces || kind() == SurfaceKind::ses) check_sphere_resources(structure, read_here->atoms, spheres, max_faces);
   });
   const std::span<const Atom> whole = read_here ? std::span<const Atom>(read_here->atoms) : std::span<const Atom>{};
   // A job that may fill a large share of the memory trades a little time for a smaller

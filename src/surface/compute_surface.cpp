@@ -16,6 +16,7 @@
 #include "surface/cleanup.hpp"
 #include "surface/one_pass/one_pass_union.hpp"
 #include "surface/solvent_accessible_surface.hpp"
+#include "surface/ses_from_union.hpp"
 #include "surface/surface_job_options.hpp"
 #include "ses/ses_specks.hpp"
 #include "ses/ses_true_points.hpp"
@@ -51,8 +52,8 @@ struct Attempt {
 class Pipeline {
  public:
   Pipeline(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, int threads,
-           ComputeSurfaceTimings& seconds, std::vector<std::string>& notes)
-      : atoms_(atoms), options_(options), threads_(threads), seconds_(seconds), notes_(notes) {}
+           ComputeSurfaceTimings& seconds, std::vector<std::string>& notes, Mesh* sas_union = nullptr)
+      : atoms_(atoms), options_(options), threads_(threads), seconds_(seconds), notes_(notes), sas_union_(sas_union) {}
 
   Attempt run(SurfaceMethod method) const {
     Attempt attempt;
@@ -76,7 +77,9 @@ class Pipeline {
       check_surface_memory(options_.source, estimate, max_memory);
     };
     if (options_.surface == SurfaceKind::ses) {
-      ses_detail::ExcludedSurface ses = ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_);
+      ses_detail::ExcludedSurface ses =
+          sas_union_ ? ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_, std::move(*sas_union_))
+                     : ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_);
       attempt.method = SurfaceMethod::one_pass;
       attempt.mesh = options_.outer_only ? outer_surface_only(ses.mesh) : std::move(ses.mesh);
       attempt.ses_arrangement = std::make_shared<const SphereArrangement>(std::move(ses.arrangement));
@@ -162,6 +165,7 @@ class Pipeline {
   int threads_;
   ComputeSurfaceTimings& seconds_;
   std::vector<std::string>& notes_;
+  Mesh* sas_union_;  // the SES's SAS union made already (compute_ses_from_union), else null
 };
 
 }  // namespace
@@ -221,14 +225,17 @@ void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& s
   }
 }
 
-ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
+namespace {
+
+ComputedSurface compute_surface_job(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested,
+                                    Mesh* sas_union) {
   const auto start = std::chrono::steady_clock::now();
   const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, requested);
   ComputedSurface result;
   result.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   // Every stage's parallel loops (union, cleanup, check) use the same team size.
   const ThreadCountScope thread_count(result.threads);
-  const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
+  const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes, sas_union);
 
   // The one place that falls back to the pairwise union (the reference method): for a
   // one-pass union that is not closed (never seen: a bug), and for a one-pass surface that
@@ -277,5 +284,21 @@ ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfac
   result.seconds.total = seconds_since(start);
   return result;
 }
+
+}  // namespace
+
+ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
+  return compute_surface_job(atoms, requested, nullptr);
+}
+
+namespace surface_detail {
+
+ComputedSurface compute_ses_from_union(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
+                                       Mesh sas_union) {
+  if (options.surface != SurfaceKind::ses) throw std::logic_error("compute_ses_from_union: not the SES");
+  return compute_surface_job(atoms, options, &sas_union);
+}
+
+}  // namespace surface_detail
 
 }  // namespace molsurf
