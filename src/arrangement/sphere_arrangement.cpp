@@ -95,12 +95,15 @@ SphereArrangement arrange_spheres(std::span<const Vec3> centres, std::span<const
   std::vector<SphereResult> spheres =
       arrangement::arrange_each_sphere(centres, radii, held, copy, std::vector<char>(n, 1));
 
-  // Vertices: every arc's ends, once each, in key order.
+  // Vertices: every arc's ends, once each, in key order. A vertex's point is the one the
+  // lowest of its spheres computed (each sphere rounds it in its own frame): the same from
+  // any set of spheres that holds those three, as a block with its halo does, whatever else
+  // the set holds and however a sort would order equal keys.
   std::vector<std::pair<Key, Vec3>> seen;
   for (std::uint32_t i = 0; i < n; ++i)
     for (const LocalArc& arc : spheres[i].arcs)
       if (!arc.whole) seen.emplace_back(arc.from, centres[i] + arc.from_point);
-  std::sort(seen.begin(), seen.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::stable_sort(seen.begin(), seen.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<Key> vertex_keys;
   for (const auto& [key, point] : seen)
     if (vertex_keys.empty() || vertex_keys.back() != key) {
