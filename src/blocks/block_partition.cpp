@@ -1,6 +1,7 @@
 #include "blocks/block_partition.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 #include "blocks/coordinate_bisection.hpp"
@@ -10,7 +11,39 @@
 
 namespace molsurf::blocks {
 
-BlockPartition partition_blocks(std::span<const Atom> atoms, const SphereOptions& options, std::size_t blocks) {
+namespace {
+
+// Every atom of another block whose centre lies in block b's box of centres grown by
+// `reach`, added to its halo: the atoms sorted by x once, each block's slab found by
+// bisection.
+void add_atoms_within_reach(std::span<const Vec3> centres, double reach, BlockPartition& partition) {
+  std::vector<std::uint32_t> by_x(centres.size());
+  std::iota(by_x.begin(), by_x.end(), std::uint32_t{0});
+  std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return centres[a].x < centres[b].x || (centres[a].x == centres[b].x && a < b);
+  });
+  for (std::size_t b = 0; b < partition.size(); ++b) {
+    if (partition.atoms[b].empty()) continue;
+    Vec3 low = centres[partition.atoms[b].front()], high = low;
+    for (std::uint32_t i : partition.atoms[b]) {
+      low = {std::min(low.x, centres[i].x), std::min(low.y, centres[i].y), std::min(low.z, centres[i].z)};
+      high = {std::max(high.x, centres[i].x), std::max(high.y, centres[i].y), std::max(high.z, centres[i].z)};
+    }
+    const auto first = std::lower_bound(by_x.begin(), by_x.end(), low.x - reach,
+                                        [&](std::uint32_t i, double x) { return centres[i].x < x; });
+    for (auto it = first; it != by_x.end() && centres[*it].x <= high.x + reach; ++it) {
+      const Vec3& c = centres[*it];
+      if (partition.block_of[*it] != b && c.y >= low.y - reach && c.y <= high.y + reach && c.z >= low.z - reach &&
+          c.z <= high.z + reach)
+        partition.halo[b].push_back(*it);
+    }
+  }
+}
+
+}  // namespace
+
+BlockPartition partition_blocks(std::span<const Atom> atoms, const SphereOptions& options, std::size_t blocks,
+                                double halo_reach) {
   if (blocks == 0) throw std::invalid_argument("partition_blocks: at least one block");
   BlockPartition partition;
   const std::size_t n = atoms.size();
@@ -44,6 +77,7 @@ BlockPartition partition_blocks(std::span<const Atom> atoms, const SphereOptions
       if (dot(d, d) <= reach * reach * (1 + 1e-9)) partition.halo[block].push_back(j);
     });
   }
+  if (halo_reach > 0) add_atoms_within_reach(centres, halo_reach, partition);
   for (auto& halo : partition.halo) {
     std::sort(halo.begin(), halo.end());
     halo.erase(std::unique(halo.begin(), halo.end()), halo.end());

@@ -24,8 +24,11 @@ struct BlockPartition {
   std::size_t size() const { return atoms.size(); }
 };
 
-// `blocks` blocks balanced by atom count (bisect_coordinates), with their halos.
-BlockPartition partition_blocks(std::span<const Atom> atoms, const SphereOptions& options, std::size_t blocks);
+// `blocks` blocks balanced by atom count (bisect_coordinates), with their halos. With
+// `halo_reach` > 0 a block's halo holds as well every atom of another block whose centre
+// lies in the box of the block's centres grown by it (the SES's halo: ses_halo_reach).
+BlockPartition partition_blocks(std::span<const Atom> atoms, const SphereOptions& options, std::size_t blocks,
+                                double halo_reach = 0);
 
 // One block's atoms and its halo, all that computing its piece needs, in increasing
 // global index (the order the whole union decides ties by).

@@ -3,8 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <limits>
-#include <numeric>
+#include <cmath>
 #include <chrono>
 #include <optional>
 #include <stdexcept>
@@ -30,7 +29,8 @@
 #include "molsurf/parameters.hpp"
 #include "molsurf/resource_limits.hpp"
 #include "surface/cleanup.hpp"
-#include "surface/ses_from_union.hpp"
+#include "blocks/blocked_ses.hpp"
+#include "blocks/ses_piece.hpp"
 #include "surface/surface_job_options.hpp"
 
 namespace molsurf::blocks {
@@ -44,34 +44,6 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // The faces of `mesh` whose atom lies in block `block`, on their own vertices.
 Mesh faces_of_block(const Mesh& mesh, std::span<const std::uint32_t> block_of, std::size_t block) {
   return faces_where(mesh, [&](std::size_t f) { return block_of[static_cast<std::size_t>(mesh.face_tags[f])] == block; });
-}
-
-// The glued union in the one-pass union's own order: faces by atom (each atom's in the order
-// its piece made them, which is the whole union's), vertices in the order the faces first
-// name them. The SES drawn from it is then the one process draws, face for face (the Boolean
-// that carves its ridges triangulates a cut face by the order of its input).
-Mesh in_union_order(const Mesh& glued) {
-  std::vector<std::size_t> order(glued.face_count());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return glued.face_tags[a] < glued.face_tags[b]; });
-  Mesh out;
-  out.faces.reserve(order.size());
-  out.face_tags.reserve(order.size());
-  std::vector<Index> renumbered(glued.vertex_count(), std::numeric_limits<Index>::max());
-  for (std::size_t f : order) {
-    Triangle t = glued.faces[f];
-    for (Index& v : t) {
-      if (renumbered[v] == std::numeric_limits<Index>::max()) {
-        renumbered[v] = static_cast<Index>(out.vertices.size());
-        out.vertices.push_back(glued.vertices[v]);
-      }
-      v = renumbered[v];
-    }
-    out.faces.push_back(t);
-    out.face_tags.push_back(glued.face_tags[f]);
-  }
-  return out;
 }
 
 // The pieces as written: the checked surface's faces, block by block (a face's block is its
@@ -154,8 +126,9 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   std::optional<std::vector<PieceMessage>> made = pieces_of_all_blocks<PieceMessage>(
       block_count, blocked.exchange,
       [&](std::size_t b) {
+        if (ses) return make_ses_piece(held, b, options, result.threads);
         PieceMessage piece = make_piece(held, b, options, result.threads);
-        if (options.exact_areas && !ses) {
+        if (options.exact_areas) {
           const auto clock = Clock::now();
           piece.exact = block_arrangement(held.block_atoms(b), options.spheres, result.threads);
           piece.seconds_exact = seconds_since(clock);
@@ -181,8 +154,13 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   pieces.reserve(partition.size());
   seams.reserve(partition.size());
   Quality before;
+  double area_spent = 0;  // by the SES pieces' cleanups
   for (PieceMessage& m : messages) {
     add_piece_totals(result, before, m, options.cleanup);
+    if (ses) {
+      add_true_points(result.true_points, m.true_points);
+      area_spent += std::abs(m.cleanup.area_after - m.cleanup.area_before);
+    }
     out.blocks.push_back(m.stats);
     pieces.push_back(std::move(m.mesh));
     seams.push_back(std::move(m.seam));
@@ -190,6 +168,28 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     seconds_exact += m.seconds_exact;
   }
   messages = {};
+  if (ses) {
+    report(SurfaceStage::check, 0, 1);
+    std::string why;
+    if (!finish_blocked_ses(atoms, options, std::move(pieces), area_spent, result, why)) {
+      // Never seen: a block whose SES took another path than the whole structure's (its
+      // attempts or ridges decided on what lies beyond its halo). Valid or nothing.
+      ComputeSurfaceOptions whole = options;
+      whole.progress = nullptr;
+      whole.threads = result.threads;
+      std::vector<std::string> notes = std::move(result.notes);
+      result = compute_surface(atoms, whole);
+      notes.push_back("the SES's pieces did not join (" + why + "): drawn from the whole structure at once");
+      result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
+    } else {
+      if (result.cleanup) result.cleanup->before = before;
+      result.quality_before = before;
+    }
+    report(SurfaceStage::check, 1, 1);
+    hand_out_pieces(result.mesh, partition, blocked, out.blocks);
+    result.seconds.total = seconds_since(start);
+    return out;
+  }
 
   // The seams and every pair of faces from different pieces: the glued surface's check.
   auto clock = Clock::now();
@@ -199,20 +199,6 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
       glue_pieces(pieces, seams, exact_same_point(atoms, options.spheres, partition.contained), &glued_seam);
   pieces = {};
   seams = {};
-  if (ses) {
-    // The SES drawn from the glued union, as one process draws it from its own.
-    ComputeSurfaceOptions whole = options;
-    whole.progress = nullptr;
-    whole.threads = result.threads;
-    const double seconds_pieces = result.seconds.union_;
-    ComputedSurface surface = surface_detail::compute_ses_from_union(atoms, whole, in_union_order(glued));
-    surface.seconds.union_ += seconds_pieces;
-    result = std::move(surface);
-    report(SurfaceStage::check, 1, 1);
-    hand_out_pieces(result.mesh, partition, blocked, out.blocks);
-    result.seconds.total = seconds_since(start);
-    return out;
-  }
   if (options.cleanup) {
     // The seams' own cleanup: their slivers, which no piece could touch, with the faces of
     // both sides in view; everything but a band two rings wider than the pieces left frozen.

@@ -8,9 +8,10 @@
 // exact areas come from each block's own arrangement (block_areas.hpp), joined.
 // Streamed (streamed_surface.hpp): each piece's faces away from the seams are handed out
 // as soon as the piece is checked and released; the peak memory is a piece's and the seams'.
-// The SES: the union's pieces are glued as they leave the union, and the SES is drawn from
-// the whole glued union as compute_surface draws it from its own (ses_from_union.hpp); it is
-// never streamed, and its peak memory is the whole SES's.
+// The SES (ses_piece.hpp, blocked_ses.hpp): each block draws the SES of its atoms and a
+// wider halo, cleans it with all but its own faces and a band around them frozen, and keeps
+// its own faces; the first process glues the pieces by position and cleans the band. It is
+// never streamed: the first process holds the whole cleaned SES, the others one block's.
 #include <cstddef>
 #include <functional>
 #include <span>

@@ -30,6 +30,7 @@ void append_piece(std::string& out, const PieceMessage& piece) {
   put_mesh(out, piece.mesh);
   put_array(out, piece.seam);
   put_piece_numbers(out, piece);
+  put(out, piece.true_points);
 }
 
 std::vector<PieceMessage> read_pieces(std::string_view bytes) {
@@ -41,6 +42,7 @@ std::vector<PieceMessage> read_pieces(std::string_view bytes) {
     p.mesh = get_mesh(in);
     p.seam = in.get_array<SeamPoint>();
     get_piece_numbers(in, p);
+    p.true_points = in.get<TruePointStats>();
     pieces.push_back(std::move(p));
   }
   return pieces;

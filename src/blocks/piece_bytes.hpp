@@ -13,6 +13,7 @@
 #include "blocks/seam.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/mesh.hpp"
+#include "molsurf/true_points.hpp"
 
 namespace molsurf::blocks {
 
@@ -32,6 +33,7 @@ struct PieceMessage {
   double seconds_union = 0, seconds_cleanup = 0, seconds_check = 0;
   arrangement::ArrangementPart exact;  // the block's exact areas (block_areas.hpp; empty without)
   double seconds_exact = 0;
+  TruePointStats true_points;  // the SES's piece: its vertices moved onto the true patches
 };
 
 // A mesh's vertices, faces and atom tags; get_mesh throws std::invalid_argument for a face

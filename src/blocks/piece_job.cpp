@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "blocks/block_piece.hpp"
+#include "blocks/ses_piece.hpp"
 #include "common/thread_count_scope.hpp"
 #include "molsurf/parameters.hpp"
 #include "molsurf/resource_limits.hpp"
@@ -45,7 +46,11 @@ BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions
   if (streamed) job.max_sphere_faces = static_cast<std::uint64_t>(kMaxFacesParameter.high);
   BlockJob out{surface_detail::surface_job_options(atoms, job), {}};
   const ThreadCountScope thread_count(out.options.threads > 0 ? out.options.threads : omp_get_max_threads());
-  out.partition = partition_blocks(atoms, out.options.spheres, blocks);
+  // The SES's pieces are drawn from their blocks' atoms and a halo as wide as the SES's
+  // faces depend on (ses_piece.hpp).
+  const double halo_reach =
+      out.options.surface == SurfaceKind::ses ? ses_halo_reach(atoms, out.options.spheres) : 0.0;
+  out.partition = partition_blocks(atoms, out.options.spheres, blocks, halo_reach);
   if (streamed)
     for (std::size_t b = 0; b < out.partition.size(); ++b)
       check_sphere_resources(out.options.source.string() + " (block " + std::to_string(b + 1) + " of " +
@@ -76,6 +81,16 @@ void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned) {
   result.cleanup->short_edges_after += cleaned.short_edges_after;
 }
 
+void add_true_points(std::optional<TruePointStats>& total, const TruePointStats& part) {
+  if (!total) total = TruePointStats{};
+  total->vertices += part.vertices;
+  total->on_true_point += part.on_true_point;
+  total->partly += part.partly;
+  total->not_moved += part.not_moved;
+  total->max_distance_left = std::max(total->max_distance_left, part.max_distance_left);
+  total->seconds += part.seconds;
+}
+
 void combine_quality(Quality& total, const Quality& part) {
   if (part.faces == 0) return;
   if (total.faces == 0) {
@@ -101,10 +116,7 @@ PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurf
   m.seconds_union = seconds_since(clock);
   clock = Clock::now();
   m.before = mesh_quality(piece.mesh);
-  // The SES is drawn from the union as the union leaves it (solvent_excluded_surface.hpp):
-  // its pieces are glued uncleaned, and the SES drawn from the whole is checked.
-  const bool ses = options.surface == SurfaceKind::ses;
-  if (options.cleanup && !ses) {
+  if (options.cleanup) {
     // The seam's vertices are shared with the neighbouring pieces: frozen, both sides
     // keep them where the union put them, and the pieces still glue exactly. So are the
     // vertices near them: an edit there could cross a neighbouring piece's face, which this
@@ -121,9 +133,8 @@ PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurf
   m.stats.seam_edges = seam_edges(piece.mesh).size();
   MeshCheckOptions check_options;
   check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = ses ? MeshCheck{} : check_mesh(piece.mesh, check_options);
-  if (const auto problems = ses ? std::vector<std::string>{} : piece_problems(check, m.stats.seam_edges);
-      !problems.empty()) {
+  const MeshCheck check = check_mesh(piece.mesh, check_options);
+  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
     std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its piece has";
     for (const std::string& p : problems) text += " " + p + ";";
     throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});

@@ -31,8 +31,9 @@ struct BlockJob {
 BlockJob plan_block_job(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested, std::size_t blocks,
                         bool streamed);
 
-// Whether a job asked to stream its pieces can: the SES is drawn from the whole glued union
-// (solvent_excluded_surface.hpp), so it is held whole and never streamed.
+// Whether a job asked to stream its pieces can: the SES's pieces are joined and their seams
+// cleaned on the first process, which holds the whole surface (blocked_ses.hpp); it is
+// never streamed.
 bool streams(const ComputeSurfaceOptions& options);
 
 // molsurf::Error for what blocks do not make: the pairwise method, outer_only, true_points,
@@ -40,12 +41,15 @@ bool streams(const ComputeSurfaceOptions& options);
 void refuse_unsupported(const ComputeSurfaceOptions& options);
 
 // Block b's piece, from the atoms this process holds: computed, cleaned with its seam band
-// frozen, checked but for the seam (SurfaceCheckFailed otherwise). For the SES, the union's
-// piece as it leaves it: the SES is drawn from the glued union, and checked then.
+// frozen, checked but for the seam (SurfaceCheckFailed otherwise). The SES's: ses_piece.hpp.
 PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads);
 
 // The counts of one more cleanup (a piece's, or the seams').
 void add_cleanup(ComputedSurface& result, const CleanupStats& cleaned);
+
+// The counts of one more set of vertices moved onto the true surface (an SES piece's, or
+// the seams').
+void add_true_points(std::optional<TruePointStats>& total, const TruePointStats& part);
 
 // The quality of two meshes together, from each one's.
 void combine_quality(Quality& total, const Quality& part);

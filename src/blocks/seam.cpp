@@ -1,6 +1,7 @@
 #include "blocks/seam.hpp"
 
 #include <algorithm>
+#include <map>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -210,6 +211,41 @@ Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamP
       if (tagged) glued.face_tags.push_back(piece.face_tags[f]);
     }
   }
+  return glued;
+}
+
+Mesh glue_by_position(std::span<const Mesh> pieces, std::vector<std::uint8_t>* on_seam) {
+  Mesh glued;
+  bool tagged = true;
+  for (const Mesh& piece : pieces) tagged = tagged && piece.face_tags.size() == piece.faces.size();
+  std::map<std::array<double, 3>, Index> seam_vertex;
+  std::vector<std::uint8_t> glued_here;
+  for (const Mesh& piece : pieces) {
+    const std::vector<std::uint8_t> seam = seam_vertices(piece);
+    std::vector<Index> vertex_of(piece.vertices.size());
+    for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
+      const Vec3& p = piece.vertices[v];
+      const auto next = static_cast<Index>(glued.vertices.size());
+      if (seam[v]) {
+        const auto [it, inserted] = seam_vertex.try_emplace({p.x, p.y, p.z}, next);
+        vertex_of[v] = it->second;
+        if (!inserted) {
+          glued_here[it->second] = 1;
+          continue;
+        }
+      } else {
+        vertex_of[v] = next;
+      }
+      glued.vertices.push_back(p);
+      glued_here.push_back(0);
+    }
+    for (std::size_t f = 0; f < piece.faces.size(); ++f) {
+      const Triangle& t = piece.faces[f];
+      glued.faces.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
+      if (tagged) glued.face_tags.push_back(piece.face_tags[f]);
+    }
+  }
+  if (on_seam) *on_seam = std::move(glued_here);
   return glued;
 }
 

@@ -49,6 +49,13 @@ using SamePoint = std::function<bool(const surface_detail::PointDefinition&, con
 Mesh glue_pieces(std::span<const Mesh> pieces, std::span<const std::vector<SeamPoint>> seams,
                  const SamePoint& same_point, std::vector<std::uint8_t>* on_seam = nullptr);
 
+// Pieces whose seam vertices are shared to the bit (the SES's: ses_piece.hpp) as one mesh:
+// faces in piece order (tags kept), vertices in piece order, the vertices on each piece's
+// seam merged with the other pieces' seam vertices at the same coordinates. With `on_seam`
+// (may be null): per vertex of the glued mesh, 1 where pieces were glued. Whether the glue
+// closed every seam is the caller's to check (seam_edges of the result).
+Mesh glue_by_position(std::span<const Mesh> pieces, std::vector<std::uint8_t>* on_seam = nullptr);
+
 // Per vertex: 1 unless within `rings` edges of a vertex `near` marks (the vertices a seam's
 // cleanup must leave where they are).
 std::vector<std::uint8_t> frozen_beyond(const Mesh& mesh, std::span<const std::uint8_t> near, int rings);

@@ -12,7 +12,8 @@
 namespace molsurf::ses_detail {
 
 TruePointStats move_to_ses_points(Mesh& mesh, std::span<const Atom> atoms, double probe,
-                                  const SphereArrangement& arrangement, double max_move) {
+                                  const SphereArrangement& arrangement, double max_move,
+                                  std::span<const std::uint8_t> frozen) {
   const auto start = std::chrono::steady_clock::now();
   if (mesh.faces.empty() || atoms.empty() || !(probe > 0)) return {};
   const ses::NearestProbe nearest(atoms, probe, arrangement);
@@ -22,6 +23,7 @@ TruePointStats move_to_ses_points(Mesh& mesh, std::span<const Atom> atoms, doubl
 #pragma omp parallel for schedule(dynamic, 512)
   for (std::int64_t k = 0; k < static_cast<std::int64_t>(n); ++k) {
     const auto v = static_cast<std::size_t>(k);
+    if (!frozen.empty() && frozen[v]) continue;
     const ses::ProbePosition q = nearest.nearest(mesh.vertices[v]);
     // Contact vertices stay where the rolled surface drew them, at the radius where their
     // facets' area and volume errors balance (contact_scale.hpp); on the atom's sphere one

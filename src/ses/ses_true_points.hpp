@@ -13,6 +13,7 @@
 // of its faces falls below 5 degrees or below what it was, and the exact crossing test
 // finds nothing; a refused move is tried again halfway (mesh/move_vertices.hpp). The
 // surface stays as valid as it was, and the check after it says so.
+#include <cstdint>
 #include <span>
 
 #include "molsurf/atoms.hpp"
@@ -24,8 +25,11 @@ namespace molsurf::ses_detail {
 
 // `arrangement`: the arrangement of the atoms' r + probe spheres that the SES was built on.
 // A vertex farther than `max_move` from the true surface stays (ses_max_true_point_move).
+// With `frozen` (empty, or one flag per vertex) the flagged vertices stay: a spatial block's
+// seam band (src/blocks/).
 TruePointStats move_to_ses_points(Mesh& mesh, std::span<const Atom> atoms, double probe,
-                                  const SphereArrangement& arrangement, double max_move);
+                                  const SphereArrangement& arrangement, double max_move,
+                                  std::span<const std::uint8_t> frozen = {});
 
 // A tenth of the edge of an even mesh with the vertices per A^2 asked (0.076 A at density 2):
 // the facets' own offsets from the true surface and the SAS seams' zigzag stay well within

@@ -188,9 +188,8 @@ CleanupOptions ses_cleanup_options(CleanupOptions options, double density) {
   return options;
 }
 
-namespace {
-
-void check_excluded_input(std::span<const Atom> atoms, const SphereOptions& spheres) {
+ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads) {
+  ExcludedSurface out;
   if (!(spheres.probe > 0))
     throw Error("the solvent-excluded surface needs a probe radius above 0 (at 0 it is the van der Waals surface: "
                 "--surface vdw)");
@@ -198,15 +197,18 @@ void check_excluded_input(std::span<const Atom> atoms, const SphereOptions& sphe
     if (!(atoms[i].radius > 0))
       throw Error("atom " + std::to_string(i) +
                   ": radius 0; the solvent-excluded surface needs every atom's radius above 0");
-}
+  if (atoms.empty()) return out;
 
-// Everything after the SAS union: its arrangement, then the attempts (below).
-ExcludedSurface excluded_from_union(std::span<const Atom> atoms, const SphereOptions& spheres, int threads,
-                                    Mesh sas_union, ExcludedSurfaceStats stats) {
-  ExcludedSurface out;
-  out.stats = stats;
-  out.stats.sas_faces = sas_union.face_count();
   auto clock = std::chrono::steady_clock::now();
+  SphereUnionOptions sas_options;
+  sas_options.spheres = spheres;
+  sas_options.threads = threads;
+  SphereUnion sas = solvent_accessible_surface(atoms, sas_options);
+  if (sas.one_pass.open_edges > 0)
+    throw Error("solvent-excluded surface: " + surface_detail::open_union_message(sas.one_pass.open_edges));
+  out.stats.sas_faces = sas.mesh.face_count();
+  out.stats.seconds_sas = seconds_since(clock);
+  clock = std::chrono::steady_clock::now();
   out.arrangement = compute_areas(atoms, spheres, threads).arrangement;
   out.stats.seconds_arrangement = seconds_since(clock);
 
@@ -217,13 +219,13 @@ ExcludedSurface excluded_from_union(std::span<const Atom> atoms, const SphereOpt
   std::string failures;
   for (int attempt = 0; attempt < 3; ++attempt) {
     try {
-      if (attempt == 1) improve_surface(sas_union);
+      if (attempt == 1) improve_surface(sas.mesh);
       if (attempt == 2) {
         CleanupOptions coarser;
         coarser.min_edge_length = sas_min_edge_length(spheres.density);
-        improve_surface(sas_union, coarser);
+        improve_surface(sas.mesh, coarser);
       }
-      out.mesh = excluded_from(sas_union, atoms, spheres, out.arrangement, threads, out.stats);
+      out.mesh = excluded_from(sas.mesh, atoms, spheres, out.arrangement, threads, out.stats);
       out.stats.attempts += 1;
       return out;
     } catch (const std::logic_error& failure) {
@@ -232,30 +234,6 @@ ExcludedSurface excluded_from_union(std::span<const Atom> atoms, const SphereOpt
     }
   }
   throw Error("solvent-excluded surface: not computed (" + failures + "; a molsurf bug, please report it)");
-}
-
-}  // namespace
-
-ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads) {
-  check_excluded_input(atoms, spheres);
-  if (atoms.empty()) return {};
-  const auto clock = std::chrono::steady_clock::now();
-  SphereUnionOptions sas_options;
-  sas_options.spheres = spheres;
-  sas_options.threads = threads;
-  SphereUnion sas = solvent_accessible_surface(atoms, sas_options);
-  if (sas.one_pass.open_edges > 0)
-    throw Error("solvent-excluded surface: " + surface_detail::open_union_message(sas.one_pass.open_edges));
-  ExcludedSurfaceStats stats;
-  stats.seconds_sas = seconds_since(clock);
-  return excluded_from_union(atoms, spheres, threads, std::move(sas.mesh), stats);
-}
-
-ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads,
-                                         Mesh sas_union) {
-  check_excluded_input(atoms, spheres);
-  if (atoms.empty()) return {};
-  return excluded_from_union(atoms, spheres, threads, std::move(sas_union), {});
 }
 
 }  // namespace molsurf::ses_detail

@@ -36,10 +36,6 @@ struct ExcludedSurface {
 
 // spheres.probe > 0 and every atom's radius > 0 (throws molsurf::Error otherwise).
 ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads);
-// The same from the atoms' SAS union made already (the one-pass union, as it leaves it:
-// uncleaned; face tags the atoms' indices), as the blocks glue it from their pieces.
-ExcludedSurface solvent_excluded_surface(std::span<const Atom> atoms, const SphereOptions& spheres, int threads,
-                                         Mesh sas_union);
 
 // The spacing of probe centres along an arc at this density (vertices per square angstrom).
 double probe_spacing(double density);

@@ -399,7 +399,9 @@ std::vector<ShortEdge> Cleaner::short_edges(double floor) const {
   // only below the floor's square, widened past its rounding), sorted after.
   const double floor2 = floor * floor * (1 + 1e-12);
   auto out = gather_edges(m_, editor_, [&](Index a, Index b) -> std::optional<ShortEdge> {
-    if (a > b) return std::nullopt;
+    // Between two frozen vertices no collapse can be made: not listed, so a block's SES
+    // piece, frozen but for its own atoms' faces, does not try each of them in vain.
+    if (a > b || (editor_.frozen(a) && editor_.frozen(b))) return std::nullopt;
     const Vec3 d = m_.vertices[b] - m_.vertices[a];
     if (!(dot(d, d) < floor2)) return std::nullopt;
     if (const double length = norm(d); length < floor) return std::pair{length, std::array<Index, 2>{a, b}};

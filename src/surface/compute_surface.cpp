@@ -16,7 +16,6 @@
 #include "surface/cleanup.hpp"
 #include "surface/one_pass/one_pass_union.hpp"
 #include "surface/solvent_accessible_surface.hpp"
-#include "surface/ses_from_union.hpp"
 #include "surface/surface_job_options.hpp"
 #include "ses/ses_specks.hpp"
 #include "ses/ses_true_points.hpp"
@@ -52,8 +51,8 @@ struct Attempt {
 class Pipeline {
  public:
   Pipeline(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, int threads,
-           ComputeSurfaceTimings& seconds, std::vector<std::string>& notes, Mesh* sas_union = nullptr)
-      : atoms_(atoms), options_(options), threads_(threads), seconds_(seconds), notes_(notes), sas_union_(sas_union) {}
+           ComputeSurfaceTimings& seconds, std::vector<std::string>& notes)
+      : atoms_(atoms), options_(options), threads_(threads), seconds_(seconds), notes_(notes) {}
 
   Attempt run(SurfaceMethod method) const {
     Attempt attempt;
@@ -77,9 +76,7 @@ class Pipeline {
       check_surface_memory(options_.source, estimate, max_memory);
     };
     if (options_.surface == SurfaceKind::ses) {
-      ses_detail::ExcludedSurface ses =
-          sas_union_ ? ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_, std::move(*sas_union_))
-                     : ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_);
+      ses_detail::ExcludedSurface ses = ses_detail::solvent_excluded_surface(atoms_, options_.spheres, threads_);
       attempt.method = SurfaceMethod::one_pass;
       attempt.mesh = options_.outer_only ? outer_surface_only(ses.mesh) : std::move(ses.mesh);
       attempt.ses_arrangement = std::make_shared<const SphereArrangement>(std::move(ses.arrangement));
@@ -165,7 +162,6 @@ class Pipeline {
   int threads_;
   ComputeSurfaceTimings& seconds_;
   std::vector<std::string>& notes_;
-  Mesh* sas_union_;  // the SES's SAS union made already (compute_ses_from_union), else null
 };
 
 }  // namespace
@@ -225,17 +221,14 @@ void check_sphere_resolution(std::span<const Atom> atoms, const SphereOptions& s
   }
 }
 
-namespace {
-
-ComputedSurface compute_surface_job(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested,
-                                    Mesh* sas_union) {
+ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
   const auto start = std::chrono::steady_clock::now();
   const ComputeSurfaceOptions options = surface_detail::surface_job_options(atoms, requested);
   ComputedSurface result;
   result.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   // Every stage's parallel loops (union, cleanup, check) use the same team size.
   const ThreadCountScope thread_count(result.threads);
-  const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes, sas_union);
+  const Pipeline pipeline(atoms, options, result.threads, result.seconds, result.notes);
 
   // The one place that falls back to the pairwise union (the reference method): for a
   // one-pass union that is not closed (never seen: a bug), and for a one-pass surface that
@@ -284,21 +277,5 @@ ComputedSurface compute_surface_job(std::span<const Atom> atoms, const ComputeSu
   result.seconds.total = seconds_since(start);
   return result;
 }
-
-}  // namespace
-
-ComputedSurface compute_surface(std::span<const Atom> atoms, const ComputeSurfaceOptions& requested) {
-  return compute_surface_job(atoms, requested, nullptr);
-}
-
-namespace surface_detail {
-
-ComputedSurface compute_ses_from_union(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
-                                       Mesh sas_union) {
-  if (options.surface != SurfaceKind::ses) throw std::logic_error("compute_ses_from_union: not the SES");
-  return compute_surface_job(atoms, options, &sas_union);
-}
-
-}  // namespace surface_detail
 
 }  // namespace molsurf
