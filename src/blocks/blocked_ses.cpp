@@ -8,6 +8,7 @@
 
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
+#include "blocks/ses_piece.hpp"
 #include "molsurf/compute_areas.hpp"
 #include "molsurf/mesh_check.hpp"
 #include "molsurf/ses_measures.hpp"
@@ -48,7 +49,7 @@ std::vector<std::uint8_t> at_positions(const Mesh& mesh, const std::vector<Posit
 }  // namespace
 
 bool finish_blocked_ses(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, std::vector<Mesh> pieces,
-                        double area_spent, ComputedSurface& result, std::string& why) {
+                        double area_change, ComputedSurface& result, std::string& why) {
   auto clock = Clock::now();
   std::vector<std::uint8_t> glued_seam;
   Mesh mesh = glue_by_position(pieces, &glued_seam);
@@ -68,16 +69,14 @@ bool finish_blocked_ses(std::span<const Atom> atoms, const ComputeSurfaceOptions
     // the share of the faces it could change, and spent it), since the band's short edges
     // are the uncleaned SES's, dense, and one process spends its budget by their count; and
     // at least the band's share by area, so that its slivers go where the pieces left little.
-    double band = 0;
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-      const Triangle& t = mesh.faces[f];
-      if (!frozen[t[0]] || !frozen[t[1]] || !frozen[t[2]]) band += face_area(mesh, f);
-    }
+    const double band = changeable_area(mesh, frozen);
     const double area = surface_area(mesh), budget = cleanup.max_area_change * area;
-    const double left = std::clamp(std::max((budget - area_spent) / budget, band / area), 0.0, 1.0);
+    const double left = std::clamp(std::max((budget - std::abs(area_change)) / budget, band / area), 0.0, 1.0);
     cleanup.max_area_change *= left;
     cleanup.max_volume_change *= left;
-    add_cleanup(result, improve_surface(mesh, cleanup, frozen));
+    const CleanupStats seams = improve_surface(mesh, cleanup, frozen);
+    add_cleanup(result, seams);
+    area_change += seams.area_after - seams.area_before;
   }
   result.seconds.cleanup += seconds_since(clock);
 
@@ -112,7 +111,8 @@ bool finish_blocked_ses(std::span<const Atom> atoms, const ComputeSurfaceOptions
   result.ses_arrangement = std::move(arrangement);
   if (result.cleanup) {
     result.cleanup->after = result.check.quality;
-    result.cleanup->area_after = result.check.area;
+    // The cleanups' own change (the true points' moves after them are counted apart).
+    result.cleanup->area_after = result.cleanup->area_before + area_change;
   }
   result.quality_after = result.check.quality;
   result.mesh = std::move(mesh);

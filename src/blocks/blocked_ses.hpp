@@ -14,11 +14,11 @@
 namespace molsurf::blocks {
 
 // Fills `result` (mesh, check, measures, patches, arrangement; adds to its cleanup counts,
-// true points and times, which hold the pieces' already). `area_spent`: the area the
-// pieces' cleanups changed, in all (the seams' cleanup gets what is left of the budget).
+// true points and times, which hold the pieces' already). `area_change`: what the pieces'
+// cleanups changed the area by, in all (the seams' cleanup gets what is left of the budget).
 // False, with `why`, when the pieces leave a seam open or the glued surface fails its
 // check: the caller then draws the SES whole.
 bool finish_blocked_ses(std::span<const Atom> atoms, const ComputeSurfaceOptions& options, std::vector<Mesh> pieces,
-                        double area_spent, ComputedSurface& result, std::string& why);
+                        double area_change, ComputedSurface& result, std::string& why);
 
 }  // namespace molsurf::blocks

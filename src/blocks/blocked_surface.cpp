@@ -154,12 +154,12 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   pieces.reserve(partition.size());
   seams.reserve(partition.size());
   Quality before;
-  double area_spent = 0;  // by the SES pieces' cleanups
+  double area_change = 0;  // by the SES pieces' cleanups
   for (PieceMessage& m : messages) {
     add_piece_totals(result, before, m, options.cleanup);
     if (ses) {
       add_true_points(result.true_points, m.true_points);
-      area_spent += std::abs(m.cleanup.area_after - m.cleanup.area_before);
+      area_change += m.cleanup.area_after - m.cleanup.area_before;
     }
     out.blocks.push_back(m.stats);
     pieces.push_back(std::move(m.mesh));
@@ -171,7 +171,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
   if (ses) {
     report(SurfaceStage::check, 0, 1);
     std::string why;
-    if (!finish_blocked_ses(atoms, options, std::move(pieces), area_spent, result, why)) {
+    if (!finish_blocked_ses(atoms, options, std::move(pieces), area_change, result, why)) {
       // Never seen: a block whose SES took another path than the whole structure's (its
       // attempts or ridges decided on what lies beyond its halo). Valid or nothing.
       ComputeSurfaceOptions whole = options;

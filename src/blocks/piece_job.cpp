@@ -106,12 +106,33 @@ void combine_quality(Quality& total, const Quality& part) {
   total.faces += part.faces;
 }
 
-PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads) {
+PieceMessage begun_piece(const HeldBlocks& held, std::size_t b) {
   PieceMessage m;
   m.block = b;
-  auto clock = Clock::now();
   m.stats.atoms = held.block_size(b);
   m.stats.halo_atoms = held.halo_size(b);
+  return m;
+}
+
+void check_piece(const Mesh& piece, const ComputeSurfaceOptions& options, const HeldBlocks& held, std::size_t b,
+                 PieceMessage& m) {
+  const auto clock = Clock::now();
+  m.stats.seam_edges = seam_edges(piece).size();
+  MeshCheckOptions check_options;
+  check_options.self_intersections = options.check_self_intersections;
+  const MeshCheck check = check_mesh(piece, check_options);
+  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
+    std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its piece has";
+    for (const std::string& p : problems) text += " " + p + ";";
+    throw SurfaceCheckFailed(check, piece, {text});
+  }
+  m.seconds_check = seconds_since(clock);
+  m.stats.seconds = m.seconds_union + m.seconds_cleanup + m.seconds_check;
+}
+
+PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads) {
+  PieceMessage m = begun_piece(held, b);
+  auto clock = Clock::now();
   BlockPiece piece = compute_block_piece(held.block_atoms(b), options.spheres, threads);
   m.seconds_union = seconds_since(clock);
   clock = Clock::now();
@@ -129,18 +150,7 @@ PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurf
     m.cleanup = improve_surface(piece.mesh, cleanup, frozen);
   }
   m.seconds_cleanup = seconds_since(clock);
-  clock = Clock::now();
-  m.stats.seam_edges = seam_edges(piece.mesh).size();
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = check_mesh(piece.mesh, check_options);
-  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
-    std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its piece has";
-    for (const std::string& p : problems) text += " " + p + ";";
-    throw SurfaceCheckFailed(check, std::move(piece.mesh), {text});
-  }
-  m.seconds_check = seconds_since(clock);
-  m.stats.seconds = m.seconds_union + m.seconds_cleanup + m.seconds_check;
+  check_piece(piece.mesh, options, held, b, m);
   m.mesh = std::move(piece.mesh);
   m.seam = std::move(piece.seam);
   return m;

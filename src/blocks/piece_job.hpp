@@ -40,6 +40,14 @@ bool streams(const ComputeSurfaceOptions& options);
 // the Stern layer.
 void refuse_unsupported(const ComputeSurfaceOptions& options);
 
+// Block b's message, begun: its block and its atom counts.
+PieceMessage begun_piece(const HeldBlocks& held, std::size_t b);
+
+// A piece's own check, but for its seam, its only boundary (SurfaceCheckFailed naming the
+// block otherwise); sets m.stats.seam_edges, m.seconds_check and m.stats.seconds.
+void check_piece(const Mesh& piece, const ComputeSurfaceOptions& options, const HeldBlocks& held, std::size_t b,
+                 PieceMessage& m);
+
 // Block b's piece, from the atoms this process holds: computed, cleaned with its seam band
 // frozen, checked but for the seam (SurfaceCheckFailed otherwise). The SES's: ses_piece.hpp.
 PieceMessage make_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads);

@@ -49,16 +49,22 @@ std::vector<std::uint8_t> near_other_atoms(const Mesh& mesh, std::span<const std
   return near;
 }
 
+double changeable_area(const Mesh& mesh, std::span<const std::uint8_t> frozen) {
+  double area = 0;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Triangle& t = mesh.faces[f];
+    if (!frozen[t[0]] || !frozen[t[1]] || !frozen[t[2]]) area += face_area(mesh, f);
+  }
+  return area;
+}
+
 Mesh ses_piece_before_cleanup(const BlockAtoms& block, const SphereOptions& spheres, int threads) {
   return own_faces(ses_detail::solvent_excluded_surface(block.atoms, spheres, threads).mesh, block);
 }
 
 PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads) {
-  PieceMessage m;
-  m.block = b;
+  PieceMessage m = begun_piece(held, b);
   auto clock = Clock::now();
-  m.stats.atoms = held.block_size(b);
-  m.stats.halo_atoms = held.halo_size(b);
   const BlockAtoms block = held.block_atoms(b);
   ses_detail::ExcludedSurface ses = ses_detail::solvent_excluded_surface(block.atoms, options.spheres, threads);
   Mesh& mesh = ses.mesh;
@@ -76,12 +82,7 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
     // budget (one process's changes crambin's area by the 0.1 % it allows), so each piece
     // gets the share of the faces it may change, and the seams' cleanup the rest.
     const std::vector<std::uint8_t> frozen = near_other_atoms(mesh, block.in_block, kPieceSeamBand);
-    double free_area = 0;
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-      const Triangle& t = mesh.faces[f];
-      if (!frozen[t[0]] || !frozen[t[1]] || !frozen[t[2]]) free_area += face_area(mesh, f);
-    }
-    const double share = std::min(1.0, free_area / surface_area(mesh));
+    const double share = std::min(1.0, changeable_area(mesh, frozen) / surface_area(mesh));
     cleanup.max_area_change *= share;
     cleanup.max_volume_change *= share;
     const double own_area = surface_area(own_faces(mesh, block));
@@ -99,18 +100,7 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
   Mesh piece = own_faces(mesh, block);
   mesh = {};
   m.seconds_cleanup = seconds_since(clock);
-  clock = Clock::now();
-  m.stats.seam_edges = seam_edges(piece).size();
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = check_mesh(piece, check_options);
-  if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
-    std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its SES piece has";
-    for (const std::string& p : problems) text += " " + p + ";";
-    throw SurfaceCheckFailed(check, std::move(piece), {text});
-  }
-  m.seconds_check = seconds_since(clock);
-  m.stats.seconds = m.seconds_union + m.seconds_cleanup + m.seconds_check;
+  check_piece(piece, options, held, b, m);
   m.mesh = std::move(piece);
   return m;
 }

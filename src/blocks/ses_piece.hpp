@@ -44,6 +44,9 @@ Mesh ses_piece_before_cleanup(const BlockAtoms& block, const SphereOptions& sphe
 // (SurfaceCheckFailed otherwise).
 PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const ComputeSurfaceOptions& options, int threads);
 
+// The area of the faces with a vertex `frozen` does not flag: what a cleanup may change.
+double changeable_area(const Mesh& mesh, std::span<const std::uint8_t> frozen);
+
 // Per vertex: 1 for the vertices of faces whose atom `own` does not flag (face tags index
 // `own`), and for those within `rings` edges of them.
 std::vector<std::uint8_t> near_other_atoms(const Mesh& mesh, std::span<const std::uint8_t> own, int rings);
