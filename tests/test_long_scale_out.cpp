@@ -1,7 +1,8 @@
 // Long (label `long`): the blocks on assemblies too large for the unit suite. The capsid
 // (1f2n, 271 860 atoms) on `mpirun -np 2` against `--blocks 2` in one process, and the
 // synthetic assembly of bench/make_assembly.py (8 copies of the capsid, 2.2 M atoms) with
-// --blocks: each written surface valid by `molsurf check`, read back through its .pvtp.
+// --blocks: each written surface valid by `molsurf check`, read back through its .pvtp. The
+// SES of 3pqr in 3 blocks against one process.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -31,6 +32,27 @@ TEST(LongScaleOut, CapsidOnTwoProcesses) {
   const auto check = testing::run_molsurf("check c.pvtp", mpi.path());
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
 #endif
+}
+
+// The SES in 3 blocks on a membrane protein with lipids and retinal (3pqr, 2 858 atoms):
+// the pieces valid by `molsurf check` through their index, the patches' area and volume the
+// single process's, the facets' within 2e-3 (each within the cleanup's budgets of the same
+// SES before cleanup), the same components.
+TEST(LongScaleOut, SesOf3pqrInBlocks) {
+  testing::TempDir dir;
+  const std::string input = "'" + kData + "/pdb/3pqr.cif' --surface ses";
+  ASSERT_EQ(testing::run_molsurf(input + " -o one.vtp --json one.json -q", dir.path()).exit_code, 0);
+  const auto blocked = testing::run_molsurf(input + " --blocks 3 -o s.pvtp --json s.json -q", dir.path());
+  ASSERT_EQ(blocked.exit_code, 0) << blocked.err;
+  const auto check = testing::run_molsurf("check s.pvtp", dir.path());
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+  const std::string one = testing::read_text(dir.path() / "one.json"), s = testing::read_text(dir.path() / "s.json");
+  for (const char* key : {"area", "volume", "contact_area", "toroidal_area", "reentrant_area"})
+    EXPECT_EQ(testing::json_number(s, key), testing::json_number(one, key)) << key;
+  for (const char* key : {"facet_area", "facet_volume"})
+    EXPECT_NEAR(testing::json_number(s, key), testing::json_number(one, key), 2e-3 * testing::json_number(one, key))
+        << key;
+  EXPECT_EQ(s.find("did not join"), std::string::npos);
 }
 
 TEST(LongScaleOut, SyntheticAssemblyInBlocks) {

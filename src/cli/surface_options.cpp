@@ -227,7 +227,9 @@ void SurfaceCommand::add_options(CLI::App& app) {
                  "NAME_K.vtp as soon as it is made, the seams between them as NAME_seams.vtp, beside a ParaView\n"
                  "index NAME.pvtp: the peak memory is then a block's, or at the end the seams', not the\n"
                  "surface's; what each block keeps for the seams waits in a temporary file in TMPDIR\n"
-                 "(docs/scale-out.md); at most one block per atom")
+                 "(docs/scale-out.md); at most one block per atom. --surface ses: each block draws its atoms'\n"
+                 "SES among a wider halo and the pieces are joined at the end (no seams' file; the whole\n"
+                 "cleaned SES is then held at once)")
       ->check(whole_number_in(kBlocksParameter));
   app.add_flag("--merge", merge, "With --blocks: write the blocks glued into one surface file (-o NAME.vtp, ...); the whole\n"
                "surface is then held at once, as with any output but .pvtp");
