@@ -44,6 +44,7 @@ std::vector<std::uint8_t> near_other_atoms(const Mesh& mesh, std::span<const std
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
     if (!own[static_cast<std::size_t>(mesh.face_tags[f])])
       for (Index v : mesh.faces[f]) other[v] = 1;
+  if (std::find(other.begin(), other.end(), std::uint8_t{1}) == other.end()) return {};
   std::vector<std::uint8_t> near = frozen_beyond(mesh, other, rings);
   for (std::uint8_t& n : near) n = n ? 0 : 1;
   return near;
@@ -82,7 +83,7 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
     // budget (one process's changes crambin's area by the 0.1 % it allows), so each piece
     // gets the share of the faces it may change, and the seams' cleanup the rest.
     const std::vector<std::uint8_t> frozen = near_other_atoms(mesh, block.in_block, kPieceSeamBand);
-    const double share = std::min(1.0, changeable_area(mesh, frozen) / surface_area(mesh));
+    const double share = frozen.empty() ? 1.0 : std::min(1.0, changeable_area(mesh, frozen) / surface_area(mesh));
     cleanup.max_area_change *= share;
     cleanup.max_volume_change *= share;
     const double own_area = surface_area(own_faces(mesh, block));

@@ -48,7 +48,8 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
 double changeable_area(const Mesh& mesh, std::span<const std::uint8_t> frozen);
 
 // Per vertex: 1 for the vertices of faces whose atom `own` does not flag (face tags index
-// `own`), and for those within `rings` edges of them.
+// `own`), and for those within `rings` edges of them; empty when every face's atom is flagged
+// (one block: nothing frozen, and the cleanup runs as without blocks).
 std::vector<std::uint8_t> near_other_atoms(const Mesh& mesh, std::span<const std::uint8_t> own, int rings);
 
 }  // namespace molsurf::blocks
