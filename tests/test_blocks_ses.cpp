@@ -150,6 +150,23 @@ TEST(BlockedSes, CleanedPiecesMatchTheSingleProcessSes) {
   }
 }
 
+// One block freezes nothing: its SES is the single process's, face for face and bit for bit.
+TEST(BlockedSes, OneBlockIsTheSingleProcessSes) {
+  for (const Placement& placement : placements()) {
+    if (placement.atoms.size() > 100) continue;
+    SCOPED_TRACE(placement.name);
+    ComputeSurfaceOptions options;
+    options.surface = SurfaceKind::ses;
+    options.spheres.probe = placement.probe;
+    options.threads = 2;
+    const ComputedSurface whole = compute_surface(placement.atoms, options);
+    const ComputedSurface one = compute_blocked_surface(placement.atoms, options, {.blocks = 1}).surface;
+    EXPECT_EQ(one.mesh.faces, whole.mesh.faces);
+    EXPECT_EQ(one.mesh.face_tags, whole.mesh.face_tags);
+    EXPECT_TRUE(one.mesh.vertices == whole.mesh.vertices);
+  }
+}
+
 // Pieces that leave a seam open are refused with the reason, and the job then draws the
 // SES whole (compute_blocked_surface's fallback).
 TEST(BlockedSes, PiecesThatDoNotCloseAreRefused) {
