@@ -71,7 +71,8 @@ bool finish_blocked_ses(std::span<const Atom> atoms, const ComputeSurfaceOptions
     // at least the band's share by area, so that its slivers go where the pieces left little.
     const double band = changeable_area(mesh, frozen);
     const double area = surface_area(mesh), budget = cleanup.max_area_change * area;
-    const double left = std::clamp(std::max((budget - std::abs(area_change)) / budget, band / area), 0.0, 1.0);
+    const double left =
+        budget > 0 ? std::clamp(std::max((budget - std::abs(area_change)) / budget, band / area), 0.0, 1.0) : 1.0;
     cleanup.max_area_change *= left;
     cleanup.max_volume_change *= left;
     const CleanupStats seams = improve_surface(mesh, cleanup, frozen);

@@ -83,7 +83,8 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
     // budget (one process's changes crambin's area by the 0.1 % it allows), so each piece
     // gets the share of the faces it may change, and the seams' cleanup the rest.
     const std::vector<std::uint8_t> frozen = near_other_atoms(mesh, block.in_block, kPieceSeamBand);
-    const double share = frozen.empty() ? 1.0 : std::min(1.0, changeable_area(mesh, frozen) / surface_area(mesh));
+    const double area = surface_area(mesh);
+    const double share = frozen.empty() || !(area > 0) ? 1.0 : std::min(1.0, changeable_area(mesh, frozen) / area);
     cleanup.max_area_change *= share;
     cleanup.max_volume_change *= share;
     const double own_area = surface_area(own_faces(mesh, block));
