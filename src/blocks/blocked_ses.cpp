@@ -95,9 +95,7 @@ bool finish_blocked_ses(std::span<const Atom> atoms, const ComputeSurfaceOptions
   result.seconds.cleanup += seconds_since(clock);
 
   clock = Clock::now();
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  result.check = check_mesh(mesh, check_options);
+  result.check = check_mesh(mesh, check_options_of(options));
   result.seconds.check += seconds_since(clock);
   if (!result.check.valid()) {
     why = "the glued surface failed its check";

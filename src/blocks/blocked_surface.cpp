@@ -210,9 +210,7 @@ BlockedSurface compute_blocked_surface(std::span<const Atom> atoms, const Comput
     result.seconds.cleanup += seconds_since(clock);
     clock = Clock::now();
   }
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  result.check = check_mesh(glued, check_options);
+  result.check = check_mesh(glued, check_options_of(options));
   result.seconds.check += seconds_since(clock);
   report(SurfaceStage::check, 1, 1);
   if (!result.check.valid())

@@ -106,6 +106,12 @@ void combine_quality(Quality& total, const Quality& part) {
   total.faces += part.faces;
 }
 
+MeshCheckOptions check_options_of(const ComputeSurfaceOptions& options) {
+  MeshCheckOptions check;
+  check.self_intersections = options.check_self_intersections;
+  return check;
+}
+
 PieceMessage begun_piece(const HeldBlocks& held, std::size_t b) {
   PieceMessage m;
   m.block = b;
@@ -118,9 +124,7 @@ void check_piece(const Mesh& piece, const ComputeSurfaceOptions& options, const 
                  PieceMessage& m) {
   const auto clock = Clock::now();
   m.stats.seam_edges = seam_edges(piece).size();
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = check_mesh(piece, check_options);
+  const MeshCheck check = check_mesh(piece, check_options_of(options));
   if (const auto problems = piece_problems(check, m.stats.seam_edges); !problems.empty()) {
     std::string text = "block " + std::to_string(b) + " of " + std::to_string(held.block_count()) + ": its piece has";
     for (const std::string& p : problems) text += " " + p + ";";

@@ -11,6 +11,7 @@
 #include "molsurf/atoms.hpp"
 #include "molsurf/cleanup.hpp"
 #include "molsurf/compute_surface.hpp"
+#include "molsurf/mesh_check.hpp"
 
 namespace molsurf::blocks {
 
@@ -39,6 +40,9 @@ bool streams(const ComputeSurfaceOptions& options);
 // molsurf::Error for what blocks do not make: the pairwise method, outer_only, true_points,
 // the Stern layer.
 void refuse_unsupported(const ComputeSurfaceOptions& options);
+
+// The check every block job runs on what it makes: the job's choice of self-intersections.
+MeshCheckOptions check_options_of(const ComputeSurfaceOptions& options);
 
 // Block b's message, begun: its block and its atom counts.
 PieceMessage begun_piece(const HeldBlocks& held, std::size_t b);

@@ -71,7 +71,12 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
   Mesh& mesh = ses.mesh;
   m.seconds_union = seconds_since(clock);
   clock = Clock::now();
-  m.before = mesh_quality(own_faces(mesh, block));
+  double own_area = 0;
+  {
+    const Mesh own = own_faces(mesh, block);
+    m.before = mesh_quality(own);
+    own_area = surface_area(own);
+  }
   // The other atoms' faces are the neighbouring pieces' (drawn the same there) or beyond the
   // halo's reach (drawn differently): frozen, with a band of the block's own next to them,
   // so the seam's vertices stay where the drawing put them on both sides and no edit here
@@ -87,7 +92,6 @@ PieceMessage make_ses_piece(const HeldBlocks& held, std::size_t b, const Compute
     const double share = frozen.empty() || !(area > 0) ? 1.0 : std::min(1.0, changeable_area(mesh, frozen) / area);
     cleanup.max_area_change *= share;
     cleanup.max_volume_change *= share;
-    const double own_area = surface_area(own_faces(mesh, block));
     m.cleanup = improve_surface(mesh, cleanup, frozen);
     // The counts of the piece's own faces: only they changed.
     m.cleanup.area_after = own_area + (m.cleanup.area_after - m.cleanup.area_before);

@@ -176,9 +176,7 @@ void check_seams(const Mesh& seams, Mesh&& together, std::span<const StreamedPie
   if (const double reach = border_reach(options.spheres); stray > reach)
     throw Error("--blocks: a face lies " + std::to_string(stray) + " A outside its atom's sphere, beyond the " +
                 std::to_string(reach) + " A the check of the seams covers; write one file (--merge)");
-  MeshCheckOptions check_options;
-  check_options.self_intersections = options.check_self_intersections;
-  const MeshCheck check = check_mesh(together, check_options);
+  const MeshCheck check = check_mesh(together, check_options_of(options));
   if (const auto problems = piece_problems(check, open_edges); !problems.empty()) {
     std::string text = "the seams between the blocks, with the faces near them, have";
     for (const std::string& p : problems) text += " " + p + ";";
