@@ -5,6 +5,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "blocks/band_reach.hpp"
+#include "geometry/point_grid.hpp"
+#include "geometry/triangle_distance.hpp"
 #include "mesh/component_volume.hpp"
 #include "mesh/topology.hpp"
 
@@ -13,6 +16,10 @@ namespace molsurf::blocks {
 namespace {
 
 constexpr std::uint8_t kFar = 255;
+
+// Added to the border's balls: many orders of magnitude above the rounding of a distance
+// (coordinates of hundreds of angstroms, 1e-13 A), and too small to matter to the border's size.
+constexpr double kBallMargin = 1e-6;
 
 // Per vertex: its rings from the seam (0 on it), kFar beyond `rings`.
 std::vector<std::uint8_t> rings_from_seam(const Mesh& mesh, int rings) {
@@ -33,20 +40,29 @@ Mesh faces_marked(const Mesh& mesh, std::span<const std::uint8_t> keep) {
   return faces_where(mesh, [&](std::size_t f) { return keep[f] != 0; });
 }
 
-// The boxes of some atoms' spheres grown by border_reach, found by place.
-class AtomBoxGrid {
+// Some atoms' spheres grown by border_reach, as balls, found by place: a face is near one
+// when it comes within the ball's radius of its centre.
+class NearBalls {
  public:
-  AtomBoxGrid(std::vector<BoundingBox> boxes, double cell) : boxes_(std::move(boxes)), cell_(cell) {
-    for (std::uint32_t a = 0; a < boxes_.size(); ++a) for_cells(boxes_[a], [&](std::uint64_t key) { cells_[key].push_back(a); });
+  struct Ball {
+    Vec3 centre;
+    double radius;
+  };
+  NearBalls(std::vector<Ball> balls, double cell) : balls_(std::move(balls)), cell_(cell) {
+    for (std::uint32_t a = 0; a < balls_.size(); ++a) for_cells(box_of(balls_[a]), [&](std::uint64_t key) { cells_[key].push_back(a); });
   }
-  bool meets(const BoundingBox& box) const {
+  bool reach(const Mesh& mesh, std::size_t f) const {
+    const BoundingBox box = bounding_box(mesh, f);
+    const Triangle& t = mesh.faces[f];
     bool found = false;
     for_cells(box, [&](std::uint64_t key) {
       if (found) return;
       const auto it = cells_.find(key);
       if (it == cells_.end()) return;
       for (std::uint32_t a : it->second)
-        if (boxes_[a].overlaps(box)) {
+        if (box_of(balls_[a]).overlaps(box) &&
+            geometry::distance_to_triangle(balls_[a].centre, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                           mesh.vertices[t[2]]) <= balls_[a].radius) {
           found = true;
           return;
         }
@@ -55,6 +71,12 @@ class AtomBoxGrid {
   }
 
  private:
+  static BoundingBox box_of(const Ball& b) {
+    BoundingBox box;
+    box.extend(b.centre - Vec3{b.radius, b.radius, b.radius});
+    box.extend(b.centre + Vec3{b.radius, b.radius, b.radius});
+    return box;
+  }
   template <class F>
   void for_cells(const BoundingBox& box, F&& f) const {
     std::int64_t lo[3], hi[3];
@@ -68,7 +90,7 @@ class AtomBoxGrid {
           f((static_cast<std::uint64_t>(x & 0x1fffff) << 42) | (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
             static_cast<std::uint64_t>(z & 0x1fffff));
   }
-  std::vector<BoundingBox> boxes_;
+  std::vector<Ball> balls_;
   double cell_;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
 };
@@ -105,10 +127,10 @@ double stray_of(const Mesh& mesh, std::size_t face, const HeldAtoms& held, const
   const std::int32_t tag = mesh.tag(face);
   const std::size_t k = tag < 0 ? HeldAtoms::kNotHeld : held.local(static_cast<std::uint32_t>(tag));
   if (k == HeldAtoms::kNotHeld) return HUGE_VAL;
-  const BoundingBox own = sphere_box(held.atoms[k], spheres, 0);
-  const BoundingBox box = bounding_box(mesh, face);
+  const Atom& atom = held.atoms[k];
+  const double radius = sphere_radius(atom, spheres);
   double out = 0;
-  for (int k = 0; k < 3; ++k) out = std::max({out, own.min[k] - box.min[k], box.max[k] - own.max[k]});
+  for (Index v : mesh.faces[face]) out = std::max(out, norm(mesh.vertices[v] - atom.centre) - radius);
   return out;
 }
 
@@ -117,40 +139,61 @@ SplitPiece split_piece(PieceMessage&& piece, const HeldAtoms& held, const Sphere
   const std::size_t faces = mesh.faces.size();
   const std::vector<std::uint8_t> ring = rings_from_seam(mesh, kBandRings);
   std::vector<std::uint8_t> in_band(faces), on_band_vertex(mesh.vertices.size(), 0);
-  std::vector<std::uint8_t> band_atom(held.size(), 0);  // per held atom
   BoundingBox written_box;
   for (std::size_t f = 0; f < faces; ++f) {
     const Triangle& t = mesh.faces[f];
     in_band[f] = std::min({ring[t[0]], ring[t[1]], ring[t[2]]}) <= kBandRings;
     if (in_band[f]) {
       for (Index v : t) on_band_vertex[v] = 1;
-      band_atom[held.local(static_cast<std::uint32_t>(mesh.tag(f)))] = 1;
     } else {
       written_box.extend(bounding_box(mesh, f));
     }
   }
 
-  // The border: written faces whose box meets the grown sphere box of an atom of another
-  // block or of an atom with band faces. A face of another block, or a band face after the
-  // seams' cleanup, lies within its own atom's grown box (stray_of, checked on every face),
-  // so any face it could cross or touch is kept here.
-  std::vector<BoundingBox> boxes;
+  // The border: written faces that come within border_reach of the sphere of an atom of
+  // another block, or within band_reach of a vertex of the band. A face of another block
+  // has every vertex within border_reach of its own atom's sphere, and a band face after
+  // the seams' cleanup lies within band_reach of its own block's band vertices (stray_of
+  // and BandVertices::drift, measured on every face), so any face either could cross or
+  // touch is kept here. Both are widened by kBallMargin, far above a distance's rounding:
+  // a face in doubt is kept.
+  std::vector<NearBalls::Ball> balls;
   double cell = 0;
   for (std::size_t a = 0; a < held.size(); ++a) {
-    if (held.block_of[a] == piece.block && !band_atom[a]) continue;
-    const BoundingBox box = sphere_box(held.atoms[a], spheres, border_reach(spheres));
+    if (held.block_of[a] == piece.block) continue;
+    const double radius = sphere_radius(held.atoms[a], spheres) + border_reach(spheres) + kBallMargin;
+    const BoundingBox box = sphere_box(held.atoms[a], spheres, border_reach(spheres) + kBallMargin);
     if (written_box.empty() || !box.overlaps(written_box)) continue;
-    cell = std::max(cell, box.max.x - box.min.x);
-    boxes.push_back(box);
+    cell = std::max(cell, 2 * radius);
+    balls.push_back({held.atoms[a].centre, radius});
   }
-  const AtomBoxGrid near(std::move(boxes), std::max(cell, 1.0));
+  const NearBalls near(std::move(balls), std::max(cell, 1.0));
+  const double band_near = band_reach(spheres) + kBallMargin;
+  double longest = 0;
+  for (std::size_t f = 0; f < faces; ++f)
+    if (!in_band[f])
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, norm(mesh.vertices[mesh.faces[f][(k + 1) % 3]] - mesh.vertices[mesh.faces[f][k]]));
+  // A point within band_near of a face lies within band_near and the longest edge of its
+  // first corner.
+  const geometry::PointGrid band_vertices(mesh.vertices, band_near + longest,
+                                          [&](std::size_t v) { return on_band_vertex[v] != 0; });
+  auto near_band = [&](std::size_t f) {
+    const Triangle& t = mesh.faces[f];
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    bool found = false;
+    band_vertices.for_each_near(a, [&](std::uint32_t v) {
+      if (!found && geometry::distance_to_triangle(mesh.vertices[v], a, b, c) <= band_near) found = true;
+    });
+    return found;
+  };
   std::vector<std::uint8_t> in_border(faces, 0), written(faces, 0);
   SplitPiece out;
   StreamedPiece& kept = out.kept;
   for (std::size_t f = 0; f < faces; ++f) {
     if (in_band[f]) continue;
     written[f] = 1;
-    in_border[f] = near.meets(bounding_box(mesh, f));
+    in_border[f] = near.reach(mesh, f) || near_band(f);
     kept.stray = std::max(kept.stray, stray_of(mesh, f, held, spheres));
   }
   {

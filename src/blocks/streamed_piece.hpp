@@ -26,7 +26,7 @@ namespace molsurf::blocks {
 
 inline constexpr int kBandRings = kSeamCleanupBand + 1;
 
-// How far a face may lie outside the box of its atom's sphere (angstrom) for the border to
+// How far a face's vertex may lie outside its atom's sphere (angstrom) for the border to
 // hold every face that another block's face can reach. Every face is measured against it.
 // The polyhedra's area correction moves faces by hundredths of an angstrom, but a face the
 // cleanup flips or collapses across a seam keeps its atom and reaches into its neighbour's
@@ -60,7 +60,7 @@ struct StreamedPiece {
   // border: where the check of band and border together finds its only boundary.
   std::uint64_t border_open_edges = 0;
   // The written faces: counts (vertices: those no band face has), area, volume about the
-  // origin, quality, how far a face lies outside its atom's sphere box, per-atom areas.
+  // origin, quality, how far a face's vertex lies outside its atom's sphere, per-atom areas.
   std::uint64_t faces = 0, vertices = 0;
   double area = 0, volume = 0, stray = 0;
   Quality quality;
@@ -82,7 +82,7 @@ struct SplitPiece {
 
 // `piece` (checked but for its seam) split as above. `held`: the atoms this process holds
 // (the whole structure, or its share: the border is cut against the held atoms, which hold
-// every atom whose grown box a face that check_seams accepts can meet); `origin`: the point
+// every atom whose grown ball a face that check_seams accepts can meet); `origin`: the point
 // every piece's volume is taken about (volume_origin).
 SplitPiece split_piece(PieceMessage&& piece, const HeldAtoms& held, const SphereOptions& spheres, const Vec3& origin);
 
@@ -97,7 +97,7 @@ std::vector<StreamedPiece> read_streamed_pieces(std::string_view bytes);
 
 // Six times the signed volume of the tetrahedron from `origin` to face f.
 double six_volume_about(const Mesh& mesh, std::size_t face, const Vec3& origin);
-// How far face f lies outside the box of its atom's sphere (0 inside; infinite when its
+// How far face f's farthest vertex lies outside its atom's sphere (0 inside; infinite when its
 // atom is not held).
 double stray_of(const Mesh& mesh, std::size_t face, const HeldAtoms& held, const SphereOptions& spheres);
 

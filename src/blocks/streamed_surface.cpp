@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "blocks/band_reach.hpp"
 #include "blocks/block_areas.hpp"
 #include "blocks/block_piece.hpp"
 #include "blocks/piece_job.hpp"
@@ -64,6 +65,7 @@ std::uint32_t root_of(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 struct SeamsAndBorders {
   Mesh mesh;
   std::size_t band_faces = 0, band_vertices = 0;
+  std::optional<BandVertices> band;  // the glued band's vertices before cleanup
 };
 
 SeamsAndBorders joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOptions& options,
@@ -83,6 +85,12 @@ SeamsAndBorders joined_seams(std::span<const Atom> atoms, const ComputeSurfaceOp
   seams = {};
   out.band_faces = glued.faces.size();
   out.band_vertices = glued.vertices.size();
+  {
+    std::vector<std::uint32_t> block_of_face(glued.faces.size());
+    for (std::size_t f = 0; f < glued.faces.size(); ++f)
+      block_of_face[f] = partition.block_of[static_cast<std::size_t>(glued.tag(f))];
+    out.band.emplace(glued, block_of_face, band_reach(options.spheres));
+  }
   const bool clean = options.cleanup && out.band_faces > 0;
   std::vector<std::uint8_t> frozen;
   if (clean) frozen = frozen_beyond(glued, on_seam, kSeamCleanupBand);
@@ -159,6 +167,19 @@ Mesh seams_with_borders(SeamsAndBorders&& joined) {
   vertex_of = {};
   drop_unused_vertices(m);
   return m;
+}
+
+// Every seam face within band_reach of its own block's band as the pieces left it, so that
+// the borders hold every written face it could cross or touch (band_reach.hpp).
+void check_band_drift(const Mesh& seams, const BandVertices& band, const BlockPartition& partition,
+                      const SphereOptions& spheres) {
+  double drift = 0;
+  for (std::size_t f = 0; f < seams.faces.size(); ++f)
+    drift = std::max(drift, band.drift(seams, f, partition.block_of[static_cast<std::size_t>(seams.tag(f))]));
+  if (const double reach = band_reach(spheres); drift > reach)
+    throw Error("--blocks: a face of the seams lies " + std::to_string(drift) +
+                " A from the seam band it was cleaned from, beyond the " + std::to_string(reach) +
+                " A the check of the seams covers; write one file (--merge)");
 }
 
 // The cleaned seams and every border glued (seams_with_borders), checked as a piece is: its
@@ -351,6 +372,8 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Block
     report(SurfaceStage::check, 0, 1);
     SeamsAndBorders joined = joined_seams(atoms, options, *partition, pieces, result);
     const Mesh seams = seams_of(joined, options.cleanup && joined.band_faces > 0);
+    check_band_drift(seams, *joined.band, *partition, options.spheres);
+    joined.band.reset();
     auto clock = Clock::now();
     check_seams(seams, seams_with_borders(std::move(joined)), pieces, options, atoms, *partition);
     result.seconds.check += seconds_since(clock);
