@@ -1,8 +1,9 @@
 #pragma once
 // Work that only the first process of an exchange can do (read the structure, check its
 // spheres, cut it into blocks), with its verdict sent to every process: what it threw is
-// thrown on every other process too, so that none waits for a share that will not come, and
-// each prints the same one-line message.
+// thrown on every other process too, as FirstProcessVerdict, so that none waits for a share
+// that will not come. The first process prints the message; the others stop without a word,
+// so that mpirun's output holds it once (as under molsurf batch).
 #include <exception>
 #include <string>
 
@@ -12,9 +13,15 @@
 
 namespace molsurf::blocks {
 
+// The first process's verdict as another process throws it: the first prints it.
+class FirstProcessVerdict : public Error {
+ public:
+  using Error::Error;
+};
+
 // `work()` on the first process (or on a process alone: then only that). Collective when
 // `exchange` has several processes: the others wait for the verdict and throw it as
-// molsurf::ParameterError or molsurf::Error, as the first threw it.
+// FirstProcessVerdict.
 template <class Work>
 void on_first_process(BlockExchange* exchange, Work&& work) {
   if (exchange == nullptr || exchange->size() <= 1) {
@@ -39,9 +46,9 @@ void on_first_process(BlockExchange* exchange, Work&& work) {
   if (verdict.empty()) return;
   if (verdict[0] == 'P') {
     const std::size_t split = verdict.find('\n');
-    throw ParameterError(verdict.substr(1, split - 1), verdict.substr(split + 1));
+    throw FirstProcessVerdict(verdict.substr(1, split - 1) + ": " + verdict.substr(split + 1));
   }
-  throw Error(verdict.substr(1));
+  throw FirstProcessVerdict(verdict.substr(1));
 }
 
 }  // namespace molsurf::blocks

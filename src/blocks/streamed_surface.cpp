@@ -15,6 +15,7 @@
 #include "blocks/band_reach.hpp"
 #include "blocks/block_areas.hpp"
 #include "blocks/block_piece.hpp"
+#include "blocks/first_process_verdict.hpp"
 #include "blocks/piece_job.hpp"
 #include "blocks/seam.hpp"
 #include "blocks/pieces_of_all_blocks.hpp"
@@ -353,7 +354,7 @@ BlockedSurface compute_streamed_surface(std::span<const Atom> atoms, const Block
   }
   if (!made) {
     const std::string verdict = exchange->broadcast({});
-    if (!verdict.empty()) throw Error(verdict);
+    if (!verdict.empty()) throw FirstProcessVerdict(verdict);
     out.root = false;
     return out;
   }

@@ -5,6 +5,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "blocks/first_process_verdict.hpp"
 #include "cli/allocation.hpp"
 #include "cli/commands.hpp"
 #include "cli/mpi/message_passing.hpp"
@@ -97,6 +98,9 @@ int main(int argc, char** argv) {
     // The text report is output too: a report that did not reach standard output fails the run.
     molsurf::flush_standard_output();
     return status;
+  } catch (const molsurf::blocks::FirstProcessVerdict&) {
+    // Under mpirun: what the first process found wrong, and printed; said once.
+    return 1;
   } catch (const molsurf::ParameterError& e) {
     // A rule between options, found by the library: named as the command spells the option.
     std::cerr << "molsurf: error: " << option_spelling(e.parameter()) << ": " << e.problem() << "\n";
