@@ -25,6 +25,8 @@ namespace {
 // Above this many faces in the boxes' overlap, the finer cull (faces near the other
 // surface) pays for its tree and rays.
 constexpr std::size_t kNearCullFaces = 20000;
+// Candidate face pairs intersected at a time (cull_intersect_split).
+constexpr std::size_t kIntersectChunk = std::size_t{1} << 16;
 
 }  // namespace
 
@@ -65,14 +67,26 @@ SplitArrangement cull_intersect_split(const Operands& operands, BooleanStats& st
   stats.candidate_pairs = candidates.size();
   stats.seconds.cull += timer.lap();
 
-  std::vector<PairIntersection> pairs(candidates.size());
-  const auto pair_count = static_cast<std::int64_t>(candidates.size());
+  // The candidates are intersected a chunk at a time and only the pairs that meet are kept:
+  // most candidates do not, and a slot for each (over 100 bytes) held the SES's largest
+  // block of memory through the arrangement and the split.
+  std::vector<PairIntersection> pairs, chunk;
   ParallelExceptions errors;
-#pragma omp parallel for schedule(dynamic, 256) if (pair_count > 2048)
-  for (std::int64_t k = 0; k < pair_count; ++k)
-    errors.run(k, [&] { pairs[k] = intersect_faces(operands, candidates[k].first, candidates[k].second); });
-  errors.rethrow();
-  std::erase_if(pairs, [](const PairIntersection& p) { return p.empty(); });
+  for (std::size_t begin = 0; begin < candidates.size(); begin += kIntersectChunk) {
+    const std::size_t end = std::min(candidates.size(), begin + kIntersectChunk);
+    chunk.assign(end - begin, PairIntersection{});
+    const auto count = static_cast<std::int64_t>(end - begin);
+#pragma omp parallel for schedule(dynamic, 256) if (count > 2048)
+    for (std::int64_t k = 0; k < count; ++k)
+      errors.run(static_cast<std::int64_t>(begin) + k, [&] {
+        const auto& [a, b] = candidates[begin + static_cast<std::size_t>(k)];
+        chunk[static_cast<std::size_t>(k)] = intersect_faces(operands, a, b);
+      });
+    errors.rethrow();
+    for (PairIntersection& p : chunk)
+      if (!p.empty()) pairs.push_back(std::move(p));
+  }
+  chunk = {};
   stats.intersecting_pairs = pairs.size();
   stats.coplanar_pairs = 0;
   for (const auto& p : pairs) stats.coplanar_pairs += p.coplanar;
