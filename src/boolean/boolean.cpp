@@ -63,34 +63,37 @@ struct SplitArrangement {
 
 // The first three steps: cull, intersect, split.
 SplitArrangement cull_intersect_split(const Operands& operands, BooleanStats& stats, StepTimer& timer) {
-  const auto candidates = cull_face_pairs(operands);
-  stats.candidate_pairs = candidates.size();
-  stats.seconds.cull += timer.lap();
-
   // The candidates are intersected a chunk at a time and only the pairs that meet are kept:
   // most candidates do not, and a slot for each (over 100 bytes) held the SES's largest
-  // block of memory through the arrangement and the split.
-  std::vector<PairIntersection> pairs, chunk;
-  ParallelExceptions errors;
-  for (std::size_t begin = 0; begin < candidates.size(); begin += kIntersectChunk) {
-    const std::size_t end = std::min(candidates.size(), begin + kIntersectChunk);
-    chunk.assign(end - begin, PairIntersection{});
-    const auto count = static_cast<std::int64_t>(end - begin);
+  // block of memory through the arrangement and the split. The candidates go once
+  // intersected, and the pairs once the arrangement holds what they found.
+  std::vector<PairIntersection> pairs;
+  {
+    const auto candidates = cull_face_pairs(operands);
+    stats.candidate_pairs = candidates.size();
+    stats.seconds.cull += timer.lap();
+    std::vector<PairIntersection> chunk;
+    ParallelExceptions errors;
+    for (std::size_t begin = 0; begin < candidates.size(); begin += kIntersectChunk) {
+      const std::size_t end = std::min(candidates.size(), begin + kIntersectChunk);
+      chunk.assign(end - begin, PairIntersection{});
+      const auto count = static_cast<std::int64_t>(end - begin);
 #pragma omp parallel for schedule(dynamic, 256) if (count > 2048)
-    for (std::int64_t k = 0; k < count; ++k)
-      errors.run(static_cast<std::int64_t>(begin) + k, [&] {
-        const auto& [a, b] = candidates[begin + static_cast<std::size_t>(k)];
-        chunk[static_cast<std::size_t>(k)] = intersect_faces(operands, a, b);
-      });
-    errors.rethrow();
-    for (PairIntersection& p : chunk)
-      if (!p.empty()) pairs.push_back(std::move(p));
+      for (std::int64_t k = 0; k < count; ++k)
+        errors.run(static_cast<std::int64_t>(begin) + k, [&] {
+          const auto& [a, b] = candidates[begin + static_cast<std::size_t>(k)];
+          chunk[static_cast<std::size_t>(k)] = intersect_faces(operands, a, b);
+        });
+      errors.rethrow();
+      for (PairIntersection& p : chunk)
+        if (!p.empty()) pairs.push_back(std::move(p));
+    }
   }
-  chunk = {};
   stats.intersecting_pairs = pairs.size();
   stats.coplanar_pairs = 0;
   for (const auto& p : pairs) stats.coplanar_pairs += p.coplanar;
   Arrangement arrangement = build_arrangement(operands, pairs);
+  pairs = {};
   stats.intersection_points = arrangement.intersection_point_count;
   stats.seconds.intersect += timer.lap();
 
