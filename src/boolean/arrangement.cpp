@@ -57,9 +57,9 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   std::vector<std::uint32_t> on_both, touch;
   auto place = [&](std::uint32_t face, const Location& loc, std::uint32_t id) {
     if (loc.where == Where::edge)
-      arr.edge_points[ops.face_edges(face)[loc.index]].push_back(id);
+      arr.edge_points.list(ops.face_edges(face)[loc.index]).push_back(id);
     else if (loc.where == Where::interior)
-      arr.face_points[face].push_back(id);
+      arr.face_points.list(face).push_back(id);
   };
   for (const PairIntersection& pair : pairs) {
     if (pair.empty()) continue;
@@ -75,16 +75,16 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
       for (const auto& [k1, k2] : segments) {
         const std::uint32_t i = point_id(k1), j = point_id(k2);
         if (i == j) continue;
-        arr.face_segments[face].emplace_back(std::min(i, j), std::max(i, j));
-        if (!pair.coplanar) arr.segment_planes[face].push_back({{std::min(i, j), std::max(i, j)}, other});
-        if (pair.transversal) arr.transversal_segments[face].emplace_back(std::min(i, j), std::max(i, j));
+        arr.face_segments.list(face).emplace_back(std::min(i, j), std::max(i, j));
+        if (!pair.coplanar) arr.segment_planes.list(face).push_back({{std::min(i, j), std::max(i, j)}, other});
+        if (pair.transversal) arr.transversal_segments.list(face).emplace_back(std::min(i, j), std::max(i, j));
       }
     };
     add_segments(pair.face_a, pair.segments_a);
     add_segments(pair.face_b, pair.segments_b);
     if (pair.coplanar) {
-      arr.coplanar_partners[pair.face_a].push_back({pair.face_b, pair.same_orientation});
-      arr.coplanar_partners[pair.face_b].push_back({pair.face_a, pair.same_orientation});
+      arr.coplanar_partners.list(pair.face_a).push_back({pair.face_b, pair.same_orientation});
+      arr.coplanar_partners.list(pair.face_b).push_back({pair.face_a, pair.same_orientation});
     }
   }
   arr.intersection_point_count = id_of_key.size();
@@ -92,14 +92,14 @@ Arrangement build_arrangement(const Operands& ops, std::span<const PairIntersect
   for (std::uint32_t id : on_both) arr.on_both_surfaces[id] = 1;
   arr.may_touch.assign(arr.points.size(), 0);
   for (std::uint32_t id : touch) arr.may_touch[id] = 1;
-  for (auto& list : arr.edge_points) sort_unique(list);
-  for (auto& list : arr.face_points) sort_unique(list);
-  for (auto& list : arr.segment_planes) std::sort(list.begin(), list.end());
-  for (auto& list : arr.transversal_segments) {
+  for (auto& list : arr.edge_points.lists()) sort_unique(list);
+  for (auto& list : arr.face_points.lists()) sort_unique(list);
+  for (auto& list : arr.segment_planes.lists()) std::sort(list.begin(), list.end());
+  for (auto& list : arr.transversal_segments.lists()) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
-  for (auto& list : arr.face_segments) {
+  for (auto& list : arr.face_segments.lists()) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "boolean/intersect.hpp"
+#include "boolean/sparse_lists.hpp"
 #include "geometry/implicit_point.hpp"
 
 namespace molsurf::boolean_engine {
@@ -21,19 +22,19 @@ struct Arrangement {
   // on the other surface, or two edges crossing). Only there can the solids touch without
   // crossing: around a transversal crossing the result is always one sheet.
   std::vector<std::uint8_t> may_touch;
-  std::vector<std::vector<std::uint32_t>> edge_points;  // per combined edge: points strictly inside it
-  std::vector<std::vector<std::uint32_t>> face_points;  // per combined face: points strictly inside it
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> face_segments;  // constraints
+  SparseLists<std::uint32_t> edge_points;  // per combined edge: points strictly inside it
+  SparseLists<std::uint32_t> face_points;  // per combined face: points strictly inside it
+  SparseLists<std::pair<std::uint32_t, std::uint32_t>> face_segments;  // constraints
   // For constraints from non-coplanar pairs: (segment, the other operand's face whose
   // plane holds it), sorted. Segments of one face on one such plane are collinear.
-  std::vector<std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>>> segment_planes;
+  SparseLists<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>> segment_planes;
   // The constraints of each face that come from transversal crossings (a subset).
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> transversal_segments;
+  SparseLists<std::pair<std::uint32_t, std::uint32_t>> transversal_segments;
   struct Partner {
     std::uint32_t face;
     bool same_orientation;
   };
-  std::vector<std::vector<Partner>> coplanar_partners;  // per face: coplanar faces of the other operand
+  SparseLists<Partner> coplanar_partners;  // per face: coplanar faces of the other operand
   std::size_t intersection_point_count = 0;
 
   // A face needs re-triangulation when any point or segment lies on it or its edges.
