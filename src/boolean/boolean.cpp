@@ -213,8 +213,14 @@ BooleanResult boolean(const Mesh& a, const Mesh& b, BooleanOp op) {
   // outside (beyond the other's box).
   std::vector<std::uint8_t> passive_inside[2];
   // Solids whose boxes overlap far more than their surfaces do (a surface and scattered
-  // local tools): only the faces near the other surface run the steps.
-  if (active_count() > kNearCullFaces && 4 * active_count() > a.faces.size() + b.faces.size()) {
+  // local tools): only the faces near the other surface run the steps. Only when both
+  // surfaces have many faces there: a few on one side already make few candidate pairs,
+  // and the finer cull's tree and rays then cost more than they save (Table I's sphere and
+  // slab, 37 000 and 1 200 faces in the overlap: 84 ms with it, 26 ms without).
+  const std::size_t active_a = part[0].whole ? a.faces.size() : part[0].mesh.faces.size();
+  const std::size_t active_b = part[1].whole ? b.faces.size() : part[1].mesh.faces.size();
+  if (active_count() > kNearCullFaces && 4 * active_count() > a.faces.size() + b.faces.size() &&
+      std::min(active_a, active_b) > kNearCullFaces / 4) {
     part[0] = active_part_near(a, b);
     part[1] = active_part_near(b, a);
     if (!part[0].whole || !part[1].whole) {
